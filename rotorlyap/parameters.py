@@ -1,0 +1,506 @@
+"""Blade, rotor and flight parameters: Table I of the paper plus every omitted datum.
+
+:class:`BladeParameters` is a frozen dataclass in SI units (m, kg, s, rad, N).
+Each field's docstring entry says where its value comes from: "Table I" (the
+paper's blade data, Narkiewicz & Lucjanek 1989, realigned in
+``shared/seed/READING.md``) or "assumed: <reason>".  :data:`FIELD_INFO` holds
+the same information in machine-readable form and :func:`parameter_table`
+turns a parameter set into rows for the book's assumptions table.
+
+Geometry (``.notes/BLADE_SPEC.md``): the hub elements e1..e5 are fractions of
+the blade length R1; e1, e3, e4 are radial (shaft -> flap hinge, flap hinge ->
+lag hinge, lag hinge -> pitch hinge), e2 and e5 chordwise (lag-hinge offset
+from the flap hinge, feathering-axis offset from the pitch hinge; positive
+towards the leading edge).  The aerodynamic and massive blade runs from
+``r = R - R1`` (the root cutout) to ``r = R``; between the pitch hinge and the
+blade root is a rigid, massless cuff.  Chordwise positions are fractions of
+chord behind the leading edge.
+
+Spanwise variation: ``chord``, ``cg_position``, ``aerodynamic_centre`` and
+``mass_per_length`` may each be a float or a callable ``f(r_over_R) ->
+ndarray`` of the non-dimensional radius ``r/R``; use :meth:`BladeParameters.chord_at`
+and friends to evaluate them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, fields
+from typing import Any, Callable, Union
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .airfoil import NACA23012, Airfoil, LinearAirfoil
+from .inflow import INFLOW_MODELS
+
+__all__ = [
+    "BladeParameters",
+    "CG_POSITIONS",
+    "FIELD_INFO",
+    "INFLOW_MODELS",
+    "TABLE_I_AIRFOIL",
+    "parameter_table",
+]
+
+
+#: Section centre-of-gravity positions of the paper's three cases, fraction of
+#: chord behind the leading edge (neutral = on the assumed pitch axis, 0.25 c;
+#: forward/backward = 0.02 c either side, Table I computation parameters).
+CG_POSITIONS: dict[str, float] = {"forward": 0.23, "neutral": 0.25, "backward": 0.27}
+
+#: The Table I section: the NACA 23012 model with its moment reference moved
+#: to the Table I aerodynamic centre, 0.235 c, so that the airfoil's ``cm`` is
+#: about the point at which the blade applies the lift and drag.
+TABLE_I_AIRFOIL: Airfoil = Airfoil(
+    **{f.name: getattr(NACA23012, f.name) for f in fields(NACA23012) if f.init and f.name != "aerodynamic_centre"},
+    aerodynamic_centre=0.235,
+)
+
+Profile = Union[float, Callable[[NDArray[np.float64]], ArrayLike]]
+
+_M = "m"
+#: (unit, source or reason) of every field; ``parameter_table`` uses it.
+FIELD_INFO: dict[str, tuple[str, str]] = {
+    "radius": (_M, "Table I"),
+    "blade_length": (_M, "Table I"),
+    "hub_elements": ("R1", "Table I (directions: assumed, our reading of the lost Fig. 3)"),
+    "chord": (_M, "Table I"),
+    "twist": ("rad", "Table I"),
+    "pitch_flap_coupling": ("-", "Table I (tan delta3)"),
+    "rotor_speed": ("rad/s", "Table I"),
+    "pitch_stiffness": ("N m/rad", "Table I"),
+    "lag_damping": ("N m s/rad", "Table I"),
+    "flap_stiffness": ("N m/rad", "assumed: articulated hub, no flap spring"),
+    "lag_stiffness": ("N m/rad", "assumed: articulated hub, no lag spring (the lag damper is the only restraint)"),
+    "flap_damping": ("N m s/rad", "assumed: no flap damper on an articulated hub"),
+    "pitch_damping": ("N m s/rad", "assumed: no damping in the control system (not given)"),
+    "aerodynamic_centre": ("c", "Table I"),
+    "pitch_axis": ("c", "assumed: quarter chord, the usual feathering-axis position"),
+    "cg_position": ("c", "Table I computation parameters (I 0.02c forward, II neutral, III 0.02c aft of the pitch axis)"),
+    "mass_per_length": ("kg/m", "assumed: uniform, chosen for a Lock number of about 8 (typical articulated rotor)"),
+    "pitch_radius_of_gyration": ("c", "assumed: 0.2 c about the section C.G., a spar-dominated section "
+                                      "(a homogeneous plate would give 0.29 c)"),
+    "n_blades": ("-", "assumed: 4, the PZL W-3 Sokol (R = 7.85 m, Omega = 28.35 rad/s)"),
+    "helicopter_mass": ("kg", "assumed: 6400 kg, maximum take-off mass of the PZL W-3 Sokol"),
+    "air_density": ("kg/m^3", "assumed: ISA sea level"),
+    "gravity": ("m/s^2", "assumed: standard gravity"),
+    "airfoil": ("-", "assumed: NACA 23012 (Table I a.c. at 0.235 c suggests a 230-series section)"),
+    "inflow_model": ("-", "paper: Glauert's induced velocity (k_x = 1.2 assumed)"),
+    "inflow_ratio": ("-", "assumed: None = momentum theory with thrust = weight"),
+    "collective": ("rad", "assumed: None = trimmed so that hover thrust = weight"),
+    "cyclic_cos": ("rad", "assumed: no cyclic pitch"),
+    "cyclic_sin": ("rad", "assumed: no cyclic pitch"),
+    "n_stations": ("-", "assumed: 12 Gauss-Legendre stations on the aerodynamic span"),
+}
+
+_POSITIVE = ("radius", "blade_length", "rotor_speed", "helicopter_mass", "pitch_radius_of_gyration")
+_NONNEGATIVE = ("pitch_stiffness", "lag_damping", "flap_stiffness", "lag_stiffness", "flap_damping",
+                "pitch_damping", "air_density", "gravity")
+_FINITE = ("twist", "pitch_flap_coupling", "cyclic_cos", "cyclic_sin")
+_FRACTION = ("pitch_axis",)
+# profiles (float or callable of r/R) and what they must satisfy
+_PROFILES = {"chord": "positive", "mass_per_length": "positive",
+             "cg_position": "fraction", "aerodynamic_centre": "fraction"}
+_RADIAL_HUB = (0, 2, 3)  # e1, e3, e4
+
+
+def _is_real(v: Any) -> bool:
+    return (not isinstance(v, (bool, np.bool_))) and isinstance(v, (int, float, np.integer, np.floating))
+
+
+def _real(name: str, value: Any, allowed: str) -> float:
+    """``value`` as a finite float, or TypeError/ValueError naming ``name``."""
+    if not _is_real(value):
+        raise TypeError(f"{name} must be a real number ({allowed}), got {value!r} of type {type(value).__name__}")
+    v = float(value)
+    if not math.isfinite(v):
+        raise ValueError(f"{name} must be finite ({allowed}), got {v!r}")
+    return v
+
+
+def _int(name: str, value: Any, minimum: int) -> int:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an int >= {minimum}, got {value!r} of type {type(value).__name__}")
+    if value < minimum:
+        raise ValueError(f"{name} must be an int >= {minimum}, got {value!r}")
+    return int(value)
+
+
+def _profile_values(value: Profile, r: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Evaluate a float-or-callable spanwise profile at ``r`` (= r/R)."""
+    if callable(value):
+        return np.broadcast_to(np.asarray(value(r), dtype=np.float64), r.shape)
+    return np.full(r.shape, float(value))
+
+
+@dataclass(frozen=True)
+class BladeParameters:
+    """Parameters of the isolated rigid blade, its rotor and the flight condition.
+
+    All SI; see the module docstring for the geometry.  Construct the paper's
+    cases with :meth:`table_i` and variants with :func:`dataclasses.replace`
+    (which re-validates).
+
+    Parameters
+    ----------
+    radius : float
+        Rotor radius R, m.  Table I: 7.850 m.
+    blade_length : float
+        Blade length R1 (aerodynamic and massive span, root at ``R - R1``), m;
+        must be < ``radius``.  Table I: 6.772 m.
+    hub_elements : tuple of 5 float
+        Hub element lengths e1..e5 divided by ``blade_length``, -.  Table I:
+        (0.01, -0.005, 0.02, 0.03, 0.0); directions assumed (lost Fig. 3):
+        e1, e3, e4 radial (>= 0), e2, e5 chordwise (positive towards the
+        leading edge).
+    chord : float or callable
+        Chord c, m (or ``f(r/R)``).  Table I: 0.4 m, constant.
+    twist : float
+        Linear pretwist, tip minus root pitch angle, rad.  Table I: 0.
+    pitch_flap_coupling : float
+        tan(delta3), -; enters ``V = 0.5 K_theta (theta - theta_c + tan(delta3) beta)^2``.
+        Table I: -0.4.
+    rotor_speed : float
+        Rotor speed Omega, rad/s.  Table I: 28.35 rad/s.
+    pitch_stiffness : float
+        Pitch-hinge (control-system) stiffness K_theta, N m/rad.  Table I: 6304.
+    lag_damping : float
+        Lag-hinge damper C_zeta, N m s/rad.  Table I: 10000.
+    flap_stiffness, lag_stiffness : float
+        Flap and lag hinge springs, N m/rad.  Assumed: 0 (articulated hub).
+    flap_damping, pitch_damping : float
+        Flap and pitch hinge dampers, N m s/rad.  Assumed: 0.
+    aerodynamic_centre : float or callable
+        Aerodynamic centre, fraction of chord behind the leading edge.
+        Table I: 0.235.
+    pitch_axis : float
+        Feathering (pitch) axis, fraction of chord behind the leading edge.
+        Assumed: 0.25, the usual quarter-chord feathering axis.
+    cg_position : float or callable
+        Section centre of gravity, fraction of chord behind the leading edge.
+        Table I computation parameters: 0.23 / 0.25 / 0.27 (forward / neutral /
+        backward, 0.02 c about the pitch axis; "neutral" = on the pitch axis is
+        assumed).  Default: forward.
+    mass_per_length : float or callable
+        Blade mass per unit span, kg/m.  Assumed: 9.0 kg/m, uniform, which gives
+        a Lock number of about 8 (typical of articulated rotors) with the
+        NACA 23012 lift slope; blade mass 61 kg.
+    pitch_radius_of_gyration : float
+        Radius of gyration of the section mass about its C.G. in pitch,
+        fraction of chord.  Assumed: 0.2 (mass concentrated in a spar near the
+        quarter chord and a leading-edge balance weight; a homogeneous flat
+        plate would give 1/sqrt(12) = 0.29); with K_theta this places the
+        rotating pitch frequency near 4.6/rev, the usual range for a
+        flexible control system.
+    n_blades : int
+        Number of blades, -.  Assumed: 4 (PZL W-3 Sokol, which R = 7.85 m and
+        Omega = 28.35 rad/s match).
+    helicopter_mass : float
+        Helicopter mass supported by the rotor (thrust = weight), kg.
+        Assumed: 6400 kg, the W-3 Sokol maximum take-off mass.
+    air_density : float
+        Air density rho, kg/m^3, >= 0 (0 = vacuum).  Assumed: 1.225, ISA sea level.
+    gravity : float
+        Gravitational acceleration along -Z, m/s^2, >= 0 (0 switches gravity
+        off).  Assumed: 9.80665, standard gravity.
+    airfoil : Airfoil or LinearAirfoil
+        Section aerodynamics (constant along the span), any object with a
+        ``coefficients(alpha) -> (cl, cd, cm)`` method.  Assumed: NACA 23012
+        (:data:`TABLE_I_AIRFOIL`, moment about the Table I a.c.).
+    inflow_model : str
+        One of :data:`INFLOW_MODELS`.  Paper: Glauert ("glauert", k_x = 1.2).
+    inflow_ratio : float or None
+        Mean induced inflow ratio lambda_0 = v_i / (Omega R), >= 0; None: from
+        momentum theory with thrust = weight (:mod:`rotorlyap.inflow`).
+    collective : float or None
+        Collective pitch theta_0 at the pitch hinge, rad; None: trimmed so that
+        the hover thrust equals the weight.
+    cyclic_cos, cyclic_sin : float
+        Cyclic pitch, ``theta_c = theta_0 + cyclic_cos cos psi + cyclic_sin sin psi``, rad.
+        Assumed: 0 (the paper does not say whether cyclic is applied).
+    n_stations : int
+        Number of Gauss-Legendre stations on the aerodynamic span, >= 1.
+        Assumed: 12.
+    """
+
+    radius: float = 7.85
+    blade_length: float = 6.772
+    hub_elements: tuple[float, float, float, float, float] = (0.01, -0.005, 0.02, 0.03, 0.0)
+    chord: Profile = 0.4
+    twist: float = 0.0
+    pitch_flap_coupling: float = -0.4
+    rotor_speed: float = 28.35
+    pitch_stiffness: float = 6304.0
+    lag_damping: float = 10000.0
+    flap_stiffness: float = 0.0
+    lag_stiffness: float = 0.0
+    flap_damping: float = 0.0
+    pitch_damping: float = 0.0
+    aerodynamic_centre: Profile = 0.235
+    pitch_axis: float = 0.25
+    cg_position: Profile = 0.23
+    mass_per_length: Profile = 9.0
+    pitch_radius_of_gyration: float = 0.2
+    n_blades: int = 4
+    helicopter_mass: float = 6400.0
+    air_density: float = 1.225
+    gravity: float = 9.80665
+    airfoil: Any = field(default=TABLE_I_AIRFOIL)
+    inflow_model: str = "glauert"
+    inflow_ratio: float | None = None
+    collective: float | None = None
+    cyclic_cos: float = 0.0
+    cyclic_sin: float = 0.0
+    n_stations: int = 12
+
+    # ------------------------------------------------------------------ validation
+    def __post_init__(self) -> None:
+        set_ = lambda name, v: object.__setattr__(self, name, v)  # noqa: E731
+
+        for name in _POSITIVE:
+            v = _real(name, getattr(self, name), "> 0")
+            if not v > 0:
+                raise ValueError(f"{name} must be > 0, got {v!r}")
+            set_(name, v)
+        for name in _NONNEGATIVE:
+            v = _real(name, getattr(self, name), ">= 0")
+            if v < 0:
+                raise ValueError(f"{name} must be >= 0, got {v!r}")
+            set_(name, v)
+        for name in _FINITE:
+            set_(name, _real(name, getattr(self, name), "any finite value"))
+        for name in _FRACTION:
+            v = _real(name, getattr(self, name), "a fraction of chord in [0, 1]")
+            if not 0.0 <= v <= 1.0:
+                raise ValueError(f"{name} must lie in [0, 1] (fraction of chord behind the leading edge), got {v!r}")
+            set_(name, v)
+        for name in ("inflow_ratio", "collective"):
+            v = getattr(self, name)
+            if v is not None:
+                allowed = "None or a finite value >= 0" if name == "inflow_ratio" else "None or a finite value"
+                v = _real(name, v, allowed)
+                if name == "inflow_ratio" and v < 0:
+                    raise ValueError(f"inflow_ratio must be None or >= 0, got {v!r}")
+                set_(name, v)
+        set_("n_blades", _int("n_blades", self.n_blades, 1))
+        set_("n_stations", _int("n_stations", self.n_stations, 1))
+
+        if self.blade_length >= self.radius:
+            raise ValueError(f"blade_length must be < radius = {self.radius!r} m (the blade root lies "
+                             f"outboard of the shaft), got {self.blade_length!r}")
+
+        he = self.hub_elements
+        if isinstance(he, (str, bytes)) or not hasattr(he, "__len__"):
+            raise TypeError(f"hub_elements must be a sequence of 5 real numbers, got {he!r}")
+        if len(he) != 5:
+            raise ValueError(f"hub_elements must have 5 entries (e1..e5), got {len(he)}: {he!r}")
+        he = tuple(_real(f"hub_elements[{i}] (e{i + 1})", e, "finite, fraction of blade_length")
+                   for i, e in enumerate(he))
+        for i in _RADIAL_HUB:
+            if he[i] < 0:
+                raise ValueError(f"hub_elements[{i}] (e{i + 1}, radial) must be >= 0, got {he[i]!r}")
+        reach = (he[0] + he[2] + he[3]) * self.blade_length
+        if reach > self.root_cutout * (1.0 + 1e-12):
+            raise ValueError(f"hub_elements: the pitch hinge at (e1 + e3 + e4) R1 = {reach!r} m lies outboard "
+                             f"of the blade root R - R1 = {self.root_cutout!r} m; allowed: <= R - R1")
+        set_("hub_elements", he)
+
+        r = self.span_grid(65)
+        for name, kind in _PROFILES.items():
+            v = getattr(self, name)
+            if callable(v):
+                try:
+                    vals = _profile_values(v, r)
+                except Exception as exc:  # a failing user callable
+                    raise ValueError(f"{name}: callable f(r_over_R) failed on the span "
+                                     f"[{r[0]:.4f}, 1]: {exc}") from exc
+            else:
+                v = _real(name, v, "> 0" if kind == "positive" else "a fraction of chord in [0, 1]")
+                set_(name, v)
+                vals = np.array([v])
+            if not np.all(np.isfinite(vals)):
+                raise ValueError(f"{name} must be finite on the span, got {v!r}")
+            if kind == "positive" and not np.all(vals > 0):
+                raise ValueError(f"{name} must be > 0 on the span, got {v!r} (min {vals.min()!r})")
+            if kind == "fraction" and not np.all((vals >= 0) & (vals <= 1)):
+                raise ValueError(f"{name} must lie in [0, 1] (fraction of chord behind the leading edge) "
+                                 f"on the span, got {v!r}")
+
+        if not isinstance(self.inflow_model, str):
+            raise TypeError(f"inflow_model must be a str, one of {INFLOW_MODELS}, got {self.inflow_model!r}")
+        if self.inflow_model not in INFLOW_MODELS:
+            raise ValueError(f"inflow_model must be one of {INFLOW_MODELS}, got {self.inflow_model!r}")
+
+        if not (isinstance(self.airfoil, (Airfoil, LinearAirfoil))
+                or callable(getattr(self.airfoil, "coefficients", None))):
+            raise TypeError("airfoil must be an Airfoil, a LinearAirfoil or an object with a "
+                            f"coefficients(alpha) method, got {self.airfoil!r}")
+
+    # ------------------------------------------------------------------ cases
+    @classmethod
+    def table_i(cls, cg: str = "forward", **overrides: Any) -> "BladeParameters":
+        """The paper's blade (Table I) with one of its three C.G. positions.
+
+        Parameters
+        ----------
+        cg : {"forward", "neutral", "backward"}
+            Section C.G. 0.02 c ahead of, on, or 0.02 c behind the pitch axis
+            (0.23, 0.25, 0.27 c behind the leading edge).
+        **overrides
+            Further field values (e.g. ``air_density=0.0``).
+
+        Returns
+        -------
+        BladeParameters
+
+        Raises
+        ------
+        ValueError
+            If ``cg`` is not one of the three names.
+        """
+        if not isinstance(cg, str) or cg not in CG_POSITIONS:
+            raise ValueError(f"cg must be one of {tuple(CG_POSITIONS)}, got {cg!r}")
+        return cls(cg_position=CG_POSITIONS[cg], **overrides)
+
+    # ------------------------------------------------------------------ geometry
+    @property
+    def hub_element_lengths(self) -> tuple[float, float, float, float, float]:
+        """Hub elements e1..e5 in metres (``hub_elements * blade_length``)."""
+        return tuple(e * self.blade_length for e in self.hub_elements)  # type: ignore[return-value]
+
+    @property
+    def root_cutout(self) -> float:
+        """Radial distance from the shaft to the blade root, ``R - R1``, m."""
+        return self.radius - self.blade_length
+
+    @property
+    def root_r_over_R(self) -> float:
+        """Non-dimensional radius of the blade root, ``(R - R1)/R``, -."""
+        return self.root_cutout / self.radius
+
+    @property
+    def flap_hinge_offset(self) -> float:
+        """Radial position of the flap hinge, ``e1 R1``, m."""
+        return self.hub_elements[0] * self.blade_length
+
+    @property
+    def pitch_hinge_radius(self) -> float:
+        """Radial position of the pitch hinge at zero hinge angles, ``(e1 + e3 + e4) R1``, m."""
+        e = self.hub_elements
+        return (e[0] + e[2] + e[3]) * self.blade_length
+
+    @property
+    def tip_speed(self) -> float:
+        """Tip speed ``Omega R``, m/s."""
+        return self.rotor_speed * self.radius
+
+    def span_grid(self, n: int = 65) -> NDArray[np.float64]:
+        """``n`` equally spaced values of r/R from the blade root to the tip."""
+        return np.linspace(self.root_r_over_R, 1.0, n)
+
+    def stations(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Gauss-Legendre quadrature on the aerodynamic span.
+
+        Returns
+        -------
+        r_over_R : ndarray, shape (n_stations,)
+            Station radii, r/R.
+        weights : ndarray, shape (n_stations,)
+            Weights for integrals in r/R: ``sum(w f(r)) ~ int_{(R-R1)/R}^1 f dx``
+            (multiply by R for integrals in metres).
+        """
+        x, w = np.polynomial.legendre.leggauss(self.n_stations)
+        a, b = self.root_r_over_R, 1.0
+        return 0.5 * (b - a) * x + 0.5 * (b + a), 0.5 * (b - a) * w
+
+    # ------------------------------------------------------------------ spanwise profiles
+    def chord_at(self, r_over_R: ArrayLike) -> NDArray[np.float64]:
+        """Chord at ``r_over_R`` (broadcast), m."""
+        return _profile_values(self.chord, np.asarray(r_over_R, dtype=np.float64))
+
+    def cg_position_at(self, r_over_R: ArrayLike) -> NDArray[np.float64]:
+        """Section C.G. at ``r_over_R``, fraction of chord behind the leading edge."""
+        return _profile_values(self.cg_position, np.asarray(r_over_R, dtype=np.float64))
+
+    def aerodynamic_centre_at(self, r_over_R: ArrayLike) -> NDArray[np.float64]:
+        """Aerodynamic centre at ``r_over_R``, fraction of chord behind the leading edge."""
+        return _profile_values(self.aerodynamic_centre, np.asarray(r_over_R, dtype=np.float64))
+
+    def mass_per_length_at(self, r_over_R: ArrayLike) -> NDArray[np.float64]:
+        """Mass per unit span at ``r_over_R``, kg/m."""
+        return _profile_values(self.mass_per_length, np.asarray(r_over_R, dtype=np.float64))
+
+    # ------------------------------------------------------------------ derived quantities
+    def _span_integral(self, f: Callable[[NDArray[np.float64]], NDArray[np.float64]], n: int = 64) -> float:
+        """int_{R-R1}^{R} f(r/R) dr in metres-units, by n-point Gauss-Legendre."""
+        x, w = np.polynomial.legendre.leggauss(n)
+        a, b = self.root_r_over_R, 1.0
+        xr = 0.5 * (b - a) * x + 0.5 * (b + a)
+        return float(np.sum(0.5 * (b - a) * w * f(xr)) * self.radius)
+
+    @property
+    def blade_mass(self) -> float:
+        """Blade mass (the cuff is massless), kg."""
+        return self._span_integral(self.mass_per_length_at)
+
+    @property
+    def flap_inertia(self) -> float:
+        """Flap moment of inertia I_beta of the blade about the flap hinge, kg m^2.
+
+        Point-mass sections (chordwise and pitch inertia ignored), zero hinge angles.
+        """
+        e = self.flap_hinge_offset
+        return self._span_integral(lambda x: self.mass_per_length_at(x) * (x * self.radius - e) ** 2)
+
+    @property
+    def lift_slope(self) -> float:
+        """Lift-curve slope of the section, 1/rad (``airfoil.lift_slope`` or a +-1 deg difference)."""
+        a = getattr(self.airfoil, "lift_slope", None)
+        if a is not None:
+            return float(a)
+        d = math.radians(1.0)
+        cl_p = self.airfoil.coefficients(np.array(d))[0]
+        cl_m = self.airfoil.coefficients(np.array(-d))[0]
+        return float((cl_p - cl_m) / (2 * d))
+
+    @property
+    def lock_number(self) -> float:
+        """Lock number ``gamma = rho a c R^4 / I_beta`` (c at 0.75 R), -."""
+        c = float(self.chord_at(0.75))
+        return self.air_density * self.lift_slope * c * self.radius ** 4 / self.flap_inertia
+
+    @property
+    def solidity(self) -> float:
+        """Rotor solidity ``N c / (pi R)`` (c at 0.75 R, the conventional definition), -."""
+        return self.n_blades * float(self.chord_at(0.75)) / (math.pi * self.radius)
+
+    @property
+    def weight(self) -> float:
+        """Helicopter weight ``helicopter_mass * gravity``, N."""
+        return self.helicopter_mass * self.gravity
+
+
+def parameter_table(params: BladeParameters) -> list[tuple[str, Any, str, str]]:
+    """Rows (name, value, unit, source) for the book's parameter/assumption table.
+
+    Parameters
+    ----------
+    params : BladeParameters
+
+    Returns
+    -------
+    list of (str, object, str, str)
+        One row per field, in field order; the value is shown as given
+        (callables and the airfoil by their repr/name).
+    """
+    rows = []
+    for f in fields(params):
+        value = getattr(params, f.name)
+        if f.name == "airfoil":
+            value = getattr(value, "name", repr(value))
+        elif callable(value):
+            value = getattr(value, "__name__", repr(value))
+        unit, source = FIELD_INFO[f.name]
+        rows.append((f.name, value, unit, source))
+    return rows

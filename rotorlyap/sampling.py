@@ -1,0 +1,357 @@
+"""Points on scaled spheres and batched searches for the sup and inf over them.
+
+The direct method needs suprema and infima of smooth scalar functions ``g(psi, x)`` over
+spheres ``||x|| = rho`` of the scaled norm ``||x|| = sqrt(sum((x_i / a_i)**2))`` (and over
+shells ``lambda0 < ||x|| <= A``). No closed form exists for a general ``g``, so this module
+does what a careful analyst does by hand, but for many azimuths at once:
+
+1. evaluate ``g`` on a dense, deterministic set of directions: the coordinate axes and the
+   diagonals of every coordinate plane (structured points that catch "one component large,
+   another small" states), plus a scrambled Sobol' sequence mapped to the unit sphere through
+   the inverse normal distribution function (``scipy.stats.qmc``);
+2. take the best few samples of each azimuth and refine them by a batched projected-gradient
+   ascent on the sphere (central-difference gradients, per-point step control), optionally
+   letting the azimuth and the radius move too.
+
+Everything is vectorised: one call of ``g`` evaluates all azimuths and all directions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Callable
+
+import numpy as np
+from scipy.special import ndtri
+from scipy.stats import qmc
+
+Function = Callable[[np.ndarray, np.ndarray], np.ndarray]
+
+__all__ = ["unit_sphere_points", "Extremum", "sphere_extremum", "refine_extremum"]
+
+
+@lru_cache(maxsize=64)
+def _sphere_points_cached(dim: int, n_random: int, seed: int) -> np.ndarray:
+    eye = np.eye(dim)
+    structured = [eye, -eye]
+    for i in range(dim):
+        for j in range(i + 1, dim):
+            for si in (1.0, -1.0):
+                for sj in (1.0, -1.0):
+                    v = np.zeros(dim)
+                    v[i], v[j] = si, sj
+                    structured.append(v[None, :] / np.sqrt(2.0))
+    points = [np.vstack(structured)]
+    if dim > 1 and n_random > 0:
+        m = int(np.ceil(np.log2(n_random)))
+        sobol = qmc.Sobol(d=dim, scramble=True, seed=seed).random_base2(m)
+        normal = ndtri(np.clip(sobol, 1e-12, 1.0 - 1e-12))
+        points.append(normal / np.linalg.norm(normal, axis=1, keepdims=True))
+    out = np.vstack(points)
+    out.setflags(write=False)
+    return out
+
+
+def unit_sphere_points(dim: int, n_random: int = 1024, seed: int = 0) -> np.ndarray:
+    """Deterministic directions on the unit sphere of ``R**dim``.
+
+    Parameters
+    ----------
+    dim : int
+        Dimension of the state space (>= 1).
+    n_random : int
+        Number of quasi-random directions; rounded up to a power of two, as the balance
+        properties of a Sobol' sequence require. 0 gives the structured points only.
+    seed : int
+        Seed of the Sobol' scrambling: the same seed gives the same points.
+
+    Returns
+    -------
+    numpy.ndarray
+        Read-only array of shape ``(N, dim)`` of unit vectors: the ``2 dim`` signed axes, the
+        ``2 dim (dim - 1)`` signed diagonals of the coordinate planes, then the Sobol' points.
+        The array is cached: repeated calls cost nothing.
+    """
+    if int(dim) != dim or dim < 1:
+        raise ValueError(f"dim must be a positive integer, got {dim!r}")
+    if int(n_random) != n_random or n_random < 0:
+        raise ValueError(f"n_random must be a non-negative integer, got {n_random!r}")
+    return _sphere_points_cached(int(dim), int(n_random), int(seed))
+
+
+@dataclass(frozen=True)
+class Extremum:
+    """Best value of a search, one per azimuth (or one overall).
+
+    Attributes
+    ----------
+    value : numpy.ndarray
+        The extreme value found, shape ``(k,)``.
+    psi : numpy.ndarray
+        Azimuth where it is attained, shape ``(k,)`` (rad, or the unit of the period).
+    x : numpy.ndarray
+        State where it is attained, shape ``(k, n)``.
+    """
+
+    value: np.ndarray
+    psi: np.ndarray
+    x: np.ndarray
+
+
+def _normalise(u: np.ndarray) -> np.ndarray:
+    return u / np.linalg.norm(u, axis=-1, keepdims=True)
+
+
+def refine_extremum(
+    fun: Function,
+    psi: np.ndarray,
+    rho: np.ndarray,
+    u: np.ndarray,
+    scales: np.ndarray,
+    *,
+    sign: float = 1.0,
+    free_psi: bool = False,
+    period: float = 2 * np.pi,
+    rho_bounds: tuple[np.ndarray, np.ndarray] | None = None,
+    n_iter: int = 40,
+    h: float = 1e-6,
+    initial_step: float = 0.2,
+    min_step: float = 1e-7,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Batched local ascent of ``sign * fun(psi, rho * scales * u)`` over unit ``u``.
+
+    Each of the ``m`` candidates moves independently: a central-difference gradient in the
+    ambient coordinates of ``u`` (its tangential part is the gradient on the sphere), a
+    normalised step along it, accepted if it improves the value (the step then grows by 1.5)
+    and otherwise rejected (the step halves). All candidates and all finite-difference
+    perturbations are evaluated in one call of ``fun`` per iteration.
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(psi, x)`` with ``psi`` of shape ``(m,)`` and ``x`` of shape ``(m, n)``,
+        returning shape ``(m,)``.
+    psi, rho : numpy.ndarray
+        Start azimuths and radii, shape ``(m,)``.
+    u : numpy.ndarray
+        Start directions, shape ``(m, n)`` (normalised here).
+    scales : numpy.ndarray
+        Norm scales ``a_i``, shape ``(n,)``.
+    sign : float
+        +1 to maximise, -1 to minimise.
+    free_psi : bool
+        Let the azimuth move too (for extrema over the whole period).
+    period : float
+        Period of ``fun`` in ``psi``.
+    rho_bounds : tuple of arrays, optional
+        ``(lo, hi)`` of shape ``(m,)``: let the radius move within these bounds (a shell).
+    n_iter : int
+        Maximum number of iterations.
+    h : float
+        Relative finite-difference step.
+    initial_step, min_step : float
+        Initial and smallest step (radians on the sphere; fractions of the period/shell
+        width for psi and rho). A candidate whose step falls below ``min_step`` stops.
+
+    Returns
+    -------
+    value, psi, rho, u : numpy.ndarray
+        Best values (in the original sign), azimuths, radii and unit directions.
+    """
+    psi = np.array(psi, dtype=float, copy=True)
+    rho = np.array(rho, dtype=float, copy=True)
+    u = _normalise(np.array(u, dtype=float, copy=True))
+    m, n = u.shape
+    if m == 0:
+        return np.empty(0), psi, rho, u
+    free_rho = rho_bounds is not None
+    if free_rho:
+        lo, hi = (np.asarray(b, dtype=float) for b in rho_bounds)
+        width = np.maximum(hi - lo, 0.0)
+        free_rho_mask = width > 0
+    psi_scale = period / (2 * np.pi)
+
+    def evaluate(p, r, uu):
+        return sign * np.asarray(fun(p, (r[:, None] * uu) * scales), dtype=float)
+
+    val = evaluate(psi, rho, u)
+    step = np.full(m, float(initial_step))
+    eye = np.eye(n)
+    n_var = n + int(free_psi) + int(free_rho)
+    for _ in range(n_iter):
+        act = np.flatnonzero(step > min_step)
+        if act.size == 0:
+            break
+        ua, pa, ra = u[act], psi[act], rho[act]
+        k = act.size
+        # perturbed copies: (2 * n_var, k, ...)
+        up = [_normalise(ua + s * h * eye[i]) for i in range(n) for s in (1.0, -1.0)]
+        pp = [pa] * (2 * n)
+        rp = [ra] * (2 * n)
+        if free_psi:
+            for s in (1.0, -1.0):
+                up.append(ua)
+                pp.append(pa + s * h * psi_scale)
+                rp.append(ra)
+        if free_rho:
+            for s in (1.0, -1.0):
+                up.append(ua)
+                pp.append(pa)
+                rp.append(np.where(free_rho_mask[act], ra + s * h * width[act], ra))
+        vals = evaluate(np.concatenate(pp), np.concatenate(rp), np.concatenate(up))
+        vals = vals.reshape(2 * n_var, k)
+        grad = (vals[0::2] - vals[1::2]) / (2 * h)  # (n_var, k)
+        g_u = grad[:n].T
+        g_u = g_u - np.sum(g_u * ua, axis=1, keepdims=True) * ua  # tangential part
+        parts = [g_u]
+        if free_psi:
+            parts.append(grad[n][:, None])
+        if free_rho:
+            parts.append(np.where(free_rho_mask[act], grad[-1], 0.0)[:, None])
+        g = np.hstack(parts)
+        gnorm = np.linalg.norm(g, axis=1)
+        flat = gnorm <= 1e-300
+        d = g / np.where(flat, 1.0, gnorm)[:, None]
+        s = step[act]
+        u_t = _normalise(ua + s[:, None] * d[:, :n])
+        p_t = pa + (s * d[:, n] * psi_scale if free_psi else 0.0)
+        if free_rho:
+            r_t = np.clip(ra + s * d[:, -1] * width[act], lo[act], hi[act])
+        else:
+            r_t = ra
+        v_t = evaluate(p_t, r_t, u_t)
+        better = (v_t > val[act]) & ~flat
+        idx = act[better]
+        u[idx], psi[idx], val[idx] = u_t[better], p_t[better] if free_psi else psi[idx], v_t[better]
+        if free_rho:
+            rho[idx] = r_t[better]
+        step[act] = np.where(better, np.minimum(s * 1.5, 1.0), s * 0.5)
+        step[act[flat]] = 0.0
+    if free_psi:
+        psi = np.mod(psi, period)
+    return sign * val, psi, rho, u
+
+
+def sphere_extremum(
+    fun: Function,
+    psi: np.ndarray,
+    radius: np.ndarray | float,
+    scales: np.ndarray,
+    directions: np.ndarray,
+    *,
+    kind: str = "max",
+    per_psi: bool = True,
+    free_psi: bool = False,
+    period: float = 2 * np.pi,
+    shell: tuple[np.ndarray, np.ndarray] | None = None,
+    n_levels: int = 1,
+    n_refine: int = 4,
+    n_iter: int = 40,
+    stop_above: float | None = None,
+) -> Extremum:
+    """Sup or inf of ``fun`` over scaled spheres (or shells), sampled then refined.
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(psi, x)``, vectorised: ``psi`` shape ``(m,)``, ``x`` shape ``(m, n)``.
+    psi : numpy.ndarray
+        Azimuths, shape ``(k,)``.
+    radius : float or numpy.ndarray
+        Sphere radius (scaled norm), scalar or one per azimuth, shape ``(k,)``. Ignored when
+        ``shell`` is given.
+    scales : numpy.ndarray
+        Norm scales ``a_i``, shape ``(n,)``.
+    directions : numpy.ndarray
+        Unit directions to sample, shape ``(N, n)`` (see :func:`unit_sphere_points`).
+    kind : {"max", "min"}
+        Which extremum.
+    per_psi : bool
+        One extremum per azimuth (``True``) or one over all azimuths (``False``).
+    free_psi : bool
+        During refinement let the azimuth move (extremum over the whole period).
+    period : float
+        Period in ``psi``.
+    shell : tuple of arrays, optional
+        ``(lo, hi)`` radii per azimuth, shape ``(k,)``: search the shell
+        ``lo <= ||x|| <= hi`` instead of a sphere, sampling ``n_levels`` equally spaced radii
+        from ``lo`` to ``hi`` (both included) and refining with a free radius.
+    n_levels : int
+        Number of sampled radii in a shell.
+    n_refine : int
+        Number of best samples refined per azimuth (or overall).
+    n_iter : int
+        Iterations of the refinement.
+    stop_above : float, optional
+        Only with ``kind="max"`` and ``per_psi=False``: return as soon as a sample exceeds
+        this value (the answer is then a lower bound of the max, enough to decide that a
+        condition ``max <= stop_above`` fails).
+
+    Returns
+    -------
+    Extremum
+        Values, azimuths and states, shape ``(k,)`` or ``(1,)``.
+    """
+    if kind not in ("max", "min"):
+        raise ValueError(f"kind must be 'max' or 'min', got {kind!r}")
+    sign = 1.0 if kind == "max" else -1.0
+    psi = np.atleast_1d(np.asarray(psi, dtype=float))
+    k = psi.size
+    nd, n = directions.shape
+    if shell is not None:
+        lo, hi = (np.broadcast_to(np.asarray(b, dtype=float), (k,)) for b in shell)
+        levels = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, max(n_levels, 1))[None, :]
+        if n_levels <= 1:
+            levels = hi[:, None]
+    else:
+        levels = np.broadcast_to(np.asarray(radius, dtype=float), (k,))[:, None]
+    n_lev = levels.shape[1]
+
+    # sample: shape (k, n_lev, nd); evaluated azimuth by azimuth in blocks to bound memory
+    samples = np.empty((k, n_lev, nd))
+    block = max(1, 200_000 // max(nd * n_lev, 1))
+    for start in range(0, k, block):
+        sl = slice(start, min(start + block, k))
+        kb = sl.stop - sl.start
+        p = np.repeat(psi[sl], n_lev * nd)
+        r = np.repeat(levels[sl].reshape(-1), nd)
+        x = (r[:, None] * np.tile(directions, (kb * n_lev, 1))) * scales
+        vals = sign * np.asarray(fun(p, x), dtype=float).reshape(kb, n_lev, nd)
+        samples[sl] = vals
+        if stop_above is not None and sign > 0 and not per_psi and vals.max() > stop_above:
+            flat = int(np.argmax(vals))
+            ib, il, idir = np.unravel_index(flat, vals.shape)
+            j = sl.start + ib
+            xbest = levels[j, il] * directions[idir] * scales
+            return Extremum(np.array([vals.max()]), np.array([psi[j]]), xbest[None, :])
+
+    flat_samples = samples.reshape(k, -1)
+    n_ref = max(1, min(n_refine, flat_samples.shape[1]))
+    if per_psi:
+        top = np.argsort(-flat_samples, axis=1)[:, :n_ref]  # (k, n_ref)
+        rows = np.repeat(np.arange(k), n_ref)
+        cols = top.reshape(-1)
+    else:
+        order = np.argsort(-flat_samples, axis=None)[: max(n_ref, 1) * 2]
+        rows, cols = np.unravel_index(order, flat_samples.shape)
+    il, idir = np.divmod(cols, nd)
+    p0, r0, u0 = psi[rows], levels[rows, il], directions[idir]
+    bounds = (lo[rows], hi[rows]) if shell is not None else None
+    if n_iter > 0:
+        val, p1, r1, u1 = refine_extremum(
+            fun, p0, r0, u0, scales, sign=sign, free_psi=free_psi, period=period,
+            rho_bounds=bounds, n_iter=n_iter,
+        )
+        val = sign * val
+    else:
+        val, p1, r1, u1 = flat_samples[rows, cols], p0, r0, u0
+    x1 = (r1[:, None] * u1) * scales
+    if per_psi:
+        val = val.reshape(k, n_ref)
+        best = np.argmax(val, axis=1)
+        sel = np.arange(k) * n_ref + best
+        # sampled optimum may beat a refined start that wandered (it cannot, but be safe)
+        return Extremum(sign * val[np.arange(k), best], p1[sel], x1[sel])
+    best = int(np.argmax(val))
+    return Extremum(np.array([sign * val[best]]), np.array([p1[best]]), x1[best][None, :])

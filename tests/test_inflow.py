@@ -1,0 +1,164 @@
+"""Tests of rotorlyap.inflow: momentum theory, wake skew, k_x models, induced inflow."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from rotorlyap.inflow import (
+    INFLOW_MODELS,
+    InflowConvergenceError,
+    induced_inflow,
+    kx_factor,
+    mean_inflow,
+    momentum_inflow,
+    thrust_coefficient,
+    wake_skew,
+)
+from rotorlyap.parameters import BladeParameters
+
+CT = 0.0053
+
+
+@pytest.fixture(scope="module")
+def p() -> BladeParameters:
+    return BladeParameters.table_i("forward")
+
+
+def test_thrust_coefficient_is_weight_over_rho_pi_R2_tip_speed_squared(p):
+    """C_T = m g / (rho pi R^2 (Omega R)^2) = 0.00534 for the W-3-like data."""
+    expected = 6400 * 9.80665 / (1.225 * math.pi * 7.85**2 * (28.35 * 7.85) ** 2)
+    assert thrust_coefficient(p) == pytest.approx(expected, rel=1e-14)
+    assert thrust_coefficient(p) == pytest.approx(0.005344, abs=1e-6)
+
+
+def test_thrust_coefficient_in_vacuum_is_an_error(p):
+    with pytest.raises(ValueError, match=r"air_density must be > 0, got 0.0 \(vacuum\)"):
+        thrust_coefficient(dataclasses.replace(p, air_density=0.0))
+    with pytest.raises(ValueError, match="weight"):
+        thrust_coefficient(dataclasses.replace(p, gravity=0.0))
+
+
+def test_hover_inflow_is_sqrt_ct_over_2():
+    assert momentum_inflow(CT, 0.0) == pytest.approx(math.sqrt(CT / 2), rel=1e-15)
+
+
+def test_high_speed_inflow_tends_to_ct_over_2mu():
+    """lambda -> C_T / (2 mu) as mu >> lambda_h (Glauert's high-speed limit)."""
+    for mu in (0.3, 0.5, 1.0):
+        lam = momentum_inflow(CT, mu)
+        assert lam / (CT / (2 * mu)) == pytest.approx(1.0, abs=(CT / (2 * mu * mu)) ** 2)
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.01, 0.03, 0.05, 0.1, 0.15, 0.25, 0.5])
+def test_momentum_equation_residual_is_zero(mu):
+    lam = momentum_inflow(CT, mu)
+    assert 2 * lam * math.sqrt(mu * mu + lam * lam) - CT == pytest.approx(0.0, abs=1e-15)
+
+
+def test_newton_solution_equals_closed_form_root_of_the_quartic():
+    """For an untilted disc lambda^2 = (-mu^2 + sqrt(mu^4 + C_T^2)) / 2 exactly; Newton must agree."""
+    mu = np.linspace(0.0, 0.4, 81)
+    lam = momentum_inflow(CT, mu)
+    closed = np.sqrt(0.5 * (-(mu**2) + np.sqrt(mu**4 + CT**2)))
+    np.testing.assert_allclose(lam, closed, rtol=1e-12)
+    assert lam.shape == mu.shape
+    assert np.all(np.diff(lam) < 0)  # inflow falls with speed
+
+
+def test_momentum_inflow_broadcasts_and_returns_float_for_scalars():
+    assert isinstance(momentum_inflow(CT, 0.1), float)
+    lam = momentum_inflow(np.array([[0.004], [0.008]]), np.array([0.0, 0.1, 0.2]))
+    assert lam.shape == (2, 3)
+    assert momentum_inflow(0.0, 0.2) == 0.0
+
+
+def test_momentum_inflow_reports_non_convergence():
+    with pytest.raises(InflowConvergenceError, match="did not converge in 1 Newton iterations"):
+        momentum_inflow(CT, 0.2, maxiter=1)
+
+
+@pytest.mark.parametrize("ct, mu, match", [(-0.001, 0.1, "ct must be >= 0"), (CT, -0.1, "mu must be >= 0"),
+                                           (float("nan"), 0.1, "ct must be finite")])
+def test_momentum_inflow_rejects_bad_input(ct, mu, match):
+    with pytest.raises(ValueError, match=match):
+        momentum_inflow(ct, mu)
+
+
+def test_wake_skew_is_zero_in_hover_and_90_deg_edgewise():
+    assert wake_skew(0.0, 0.05) == 0.0
+    assert wake_skew(0.2, 0.0) == pytest.approx(math.pi / 2)
+    assert wake_skew(0.05, 0.05) == pytest.approx(math.pi / 4)
+
+
+def test_kx_published_values_at_90_deg_skew():
+    """At chi = 90 deg: Pitt-Peters 15 pi/23, Coleman tan 45 = 1, Drees 4/3 (1 - 1.8 mu^2), Glauert 1.2."""
+    mu, lam = 0.2, 0.0
+    assert kx_factor("pitt-peters", mu, lam) == pytest.approx(15 * math.pi / 23)
+    assert kx_factor("coleman", mu, lam) == pytest.approx(1.0)
+    assert kx_factor("drees", mu, lam) == pytest.approx(4 / 3 * (1 - 1.8 * mu**2))
+    assert kx_factor("glauert", mu, lam) == 1.2
+    assert kx_factor("uniform", mu, lam) == 0.0
+
+
+def test_drees_equals_its_published_form_at_intermediate_skew():
+    mu, lam = 0.1, 0.03
+    chi = math.atan2(mu, lam)
+    published = 4 / 3 * (1 - math.cos(chi) - 1.8 * mu**2) / math.sin(chi)
+    assert kx_factor("drees", mu, lam) == pytest.approx(published, rel=1e-13)
+    assert kx_factor("coleman", mu, lam) == pytest.approx(math.tan(chi / 2))
+    assert kx_factor("pitt-peters", mu, lam) == pytest.approx(15 * math.pi / 23 * math.tan(chi / 2))
+
+
+@pytest.mark.parametrize("model", INFLOW_MODELS)
+def test_kx_is_zero_in_hover(model):
+    assert kx_factor(model, 0.0, 0.05) == 0.0
+
+
+def test_kx_is_vectorised():
+    mu = np.linspace(0, 0.3, 7)
+    kx = kx_factor("pitt-peters", mu, momentum_inflow(CT, mu))
+    assert kx.shape == (7,) and kx[0] == 0.0 and np.all(np.diff(kx) > 0)
+
+
+def test_unknown_inflow_model_lists_allowed_names():
+    with pytest.raises(ValueError, match=r"unknown inflow model 'mangler'; allowed: uniform, glauert, drees, "
+                                         r"pitt-peters, coleman"):
+        kx_factor("mangler", 0.1, 0.03)
+
+
+def test_induced_inflow_is_larger_at_the_rear_of_the_disc(p):
+    """psi = 0 points downstream: lambda_i(r, 0) > lambda_0 > lambda_i(r, pi) (Glauert, k_x = 1.2)."""
+    mu = 0.15
+    lam0 = momentum_inflow(thrust_coefficient(p), mu)
+    rear, side, front = induced_inflow(p, mu, 1.0, np.array([0.0, math.pi / 2, math.pi]))
+    assert rear == pytest.approx(lam0 * 2.2)
+    assert side == pytest.approx(lam0)
+    assert front == pytest.approx(lam0 * (1 - 1.2))
+
+
+def test_induced_inflow_broadcasts_and_averages_to_lambda0(p):
+    r = np.linspace(0.2, 1.0, 5)[:, None]
+    psi = np.linspace(0, 2 * math.pi, 64, endpoint=False)[None, :]
+    lam = induced_inflow(p, 0.2, r, psi)
+    assert lam.shape == (5, 64)
+    np.testing.assert_allclose(lam.mean(axis=1), mean_inflow(p, 0.2), rtol=1e-12)
+
+
+def test_induced_inflow_in_hover_does_not_depend_on_azimuth(p):
+    lam = induced_inflow(p, 0.0, 0.7, np.linspace(0, 2 * math.pi, 9))
+    np.testing.assert_allclose(lam, math.sqrt(thrust_coefficient(p) / 2), rtol=1e-14)
+
+
+def test_inflow_ratio_override_and_uniform_model(p):
+    q = dataclasses.replace(p, inflow_ratio=0.04, inflow_model="uniform")
+    lam = induced_inflow(q, 0.25, np.array([0.3, 1.0]), np.array([[0.0], [math.pi]]))
+    np.testing.assert_array_equal(lam, 0.04)
+
+
+def test_induced_inflow_in_vacuum_is_zero(p):
+    q = dataclasses.replace(p, air_density=0.0)
+    assert np.all(induced_inflow(q, 0.1, 1.0, np.array([0.0, 1.0])) == 0.0)
