@@ -2,8 +2,23 @@
 
 A re-implementation of J. Narkiewicz & W. Lucjanek, "Investigation of helicopter rotor blade
 motion stability by direct Liapunov method", 15th European Rotorcraft Forum, 1989.
+
+Public names: the general engine (:func:`technical_stability`), simulation helpers, and the
+blade model (:class:`BladeParameters`, :class:`Blade`, :func:`hover_trim`).
 """
 
+from .airfoil import Airfoil, LinearAirfoil, NACA23012
+from .blade import Blade, EnergyFunction
 from .lyapunov import TechnicalStabilityResult, orbital_derivative, technical_stability
+from .parameters import BladeParameters
+from .simulation import SimulationResult, scaled_norm, simulate
+from .trim import HoverTrim, hover_trim
 
-__all__ = ["TechnicalStabilityResult", "orbital_derivative", "technical_stability"]
+__all__ = [
+    "Airfoil", "LinearAirfoil", "NACA23012",
+    "Blade", "EnergyFunction",
+    "TechnicalStabilityResult", "orbital_derivative", "technical_stability",
+    "BladeParameters",
+    "SimulationResult", "scaled_norm", "simulate",
+    "HoverTrim", "hover_trim",
+]

@@ -71,6 +71,11 @@ class TechnicalStabilityResult:
         sampled on the requested sphere.
     message : str
         A sentence saying what was certified, or why nothing was.
+    reading : str
+        ``"strict"``: suprema and infima over whole spheres (the theorem as stated; a
+        ``stable`` azimuth is a certificate, as far as the search is exhaustive).
+        ``"practical"``: ``W`` and ``W'`` examined only along given test directions; an
+        indicator, never a certificate.
     n_evaluations : int
         Number of states at which ``W'`` or ``W`` was evaluated.
     """
@@ -88,6 +93,7 @@ class TechnicalStabilityResult:
     step3_max_dW: float
     tol: float
     message: str
+    reading: str = "strict"
     n_evaluations: int = field(default=0, compare=False)
 
     def __post_init__(self) -> None:
@@ -98,12 +104,12 @@ class TechnicalStabilityResult:
 
     @property
     def certified(self) -> bool:
-        """True if at least one azimuth is certified stable."""
-        return bool(np.any(self.stable))
+        """True if at least one azimuth is certified stable (strict reading only)."""
+        return self.reading == "strict" and bool(np.any(self.stable))
 
     def __repr__(self) -> str:  # short and stable: no arrays, no addresses
         return (
-            f"TechnicalStabilityResult(A_requested={self.A_requested:.4g}, A={self.A:.4g}, "
+            f"TechnicalStabilityResult({self.reading}, A_requested={self.A_requested:.4g}, A={self.A:.4g}, "
             f"alpha={self.alpha:.4g}, stable={int(np.sum(self.stable))}/{self.stable.size} "
             f"azimuths, lambda0 in [{np.min(self.lambda0):.4g}, {np.max(self.lambda0):.4g}])"
         )
@@ -223,6 +229,7 @@ def technical_stability(
     rtol: float = 1e-9,
     fd_step: float = 1e-4,
     seed: int = 0,
+    test_directions=None,
 ) -> TechnicalStabilityResult:
     """Certify bounded motion of ``x' = f(psi, x)`` with the Liapunov function ``W``.
 
@@ -274,6 +281,12 @@ def technical_stability(
         Step of :func:`orbital_derivative` when ``dW`` is omitted.
     seed : int
         Seed of the quasi-random directions (results are deterministic for a given seed).
+    test_directions : array_like, optional
+        Shape ``(k, n)``: the *practical reading*. Spheres are represented only by the states
+        ``rho * a * d / |d|`` for these directions ``d`` (in scaled coordinates), at the grid
+        azimuths, with no quasi-random sampling and no refinement. The result then has
+        ``reading="practical"``: an indicator of where ``W'`` is positive along the chosen
+        disturbances, not a certificate.
 
     Returns
     -------
@@ -323,7 +336,20 @@ def technical_stability(
     fd_step = _positive_float("fd_step", fd_step)
 
     sys = _Checked(f, W, dW, n, fd_step * period / (2 * np.pi))
-    dirs = unit_sphere_points(n, n_sphere, seed)
+    if test_directions is None:
+        reading = "strict"
+        dirs = unit_sphere_points(n, n_sphere, seed)
+        free = True
+    else:
+        reading = "practical"
+        dirs = np.array(test_directions, dtype=float)
+        if dirs.ndim != 2 or dirs.shape[1] != n or dirs.shape[0] == 0:
+            raise ValueError(f"test_directions must have shape (k, {n}) with k >= 1, got {dirs.shape}")
+        norms = np.linalg.norm(dirs, axis=1)
+        if not np.all(np.isfinite(dirs)) or np.any(norms == 0):
+            raise ValueError("test_directions must be finite and non-zero")
+        dirs = dirs / norms[:, None]
+        n_iter, free = 0, False
     psi = period * np.arange(n_psi) / n_psi
     common = dict(period=period, n_refine=n_refine, n_iter=n_iter)
 
@@ -341,7 +367,7 @@ def technical_stability(
 
     def sphere_max_dw(radius: float, stop: bool) -> float:
         ext = sphere_extremum(
-            sys.dw, psi, radius, scales, dirs, per_psi=False, free_psi=True,
+            sys.dw, psi, radius, scales, dirs, per_psi=False, free_psi=free,
             stop_above=tol if stop else None, **common,
         )
         return float(ext.value[0])
@@ -378,15 +404,16 @@ def technical_stability(
             lambda0=np.zeros(n_psi), max_dW=ext.value, argmax_dW=ext.x,
             stable=np.zeros(n_psi, dtype=bool), period=period, step3_max_dW=step3, tol=tol,
             message=(
-                f"nothing certified: W' > 0 was found on every sphere tested for radii from "
-                f"{A * 1e-4:.3g} to A = {A:.3g} (step 3); max W' on ||x|| = A is {step3:.3g}"
+                f"nothing {'certified' if reading == 'strict' else 'indicated stable'}: W' > 0 "
+                f"was found on every sphere tested for radii from {A * 1e-4:.3g} to A = {A:.3g} "
+                f"(step 3); max W' on ||x|| = A is {step3:.3g}"
             ),
-            n_evaluations=sys.count,
+            reading=reading, n_evaluations=sys.count,
         )
 
     # step 4
     alpha = float(sphere_extremum(
-        sys.w, psi, A_used, scales, dirs, kind="min", per_psi=False, free_psi=True, **common,
+        sys.w, psi, A_used, scales, dirs, kind="min", per_psi=False, free_psi=free, **common,
     ).value[0])
 
     # step 5: lambda0_j = largest radius whose ball has sup W < alpha
@@ -419,9 +446,10 @@ def technical_stability(
     stable = (lambda0 > 0) & (ext.value <= tol)
     n_ok = int(stable.sum())
     reduced = "" if A_used == A else f" (step 3 reduced A from {A:.4g} to {A_used:.4g})"
-    message = f"certified at {n_ok} of {n_psi} azimuths{reduced}"
+    verb = "certified" if reading == "strict" else "indicated stable (practical reading, not a certificate)"
+    message = f"{verb} at {n_ok} of {n_psi} azimuths{reduced}"
     return TechnicalStabilityResult(
         A_requested=A, scales=scales, A=float(A_used), alpha=alpha, psi=psi,
         lambda0=lambda0, max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period,
-        step3_max_dW=step3, tol=tol, message=message, n_evaluations=sys.count,
+        step3_max_dW=step3, tol=tol, message=message, reading=reading, n_evaluations=sys.count,
     )

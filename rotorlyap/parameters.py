@@ -9,9 +9,12 @@ turns a parameter set into rows for the book's assumptions table.
 
 Geometry (``.notes/BLADE_SPEC.md``): the hub elements e1..e5 are fractions of
 the blade length R1; e1, e3, e4 are radial (shaft -> flap hinge, flap hinge ->
-lag hinge, lag hinge -> pitch hinge), e2 and e5 chordwise (lag-hinge offset
-from the flap hinge, feathering-axis offset from the pitch hinge; positive
-towards the leading edge).  The aerodynamic and massive blade runs from
+lag hinge, lag hinge -> pitch hinge), e2 normal to the flap frame's plane
+(height of the lag hinge above the flap hinge, along z_F; negative: below) and
+e5 chordwise (feathering-axis offset from the pitch hinge, positive towards
+the leading edge).  A chordwise reading of e2 (-3.4 cm towards the trailing
+edge) would cock the blade 9.5 deg aft in lag by centrifugal force alone, a
+hub no designer would build; the vertical reading has no such static effect.  The aerodynamic and massive blade runs from
 ``r = R - R1`` (the root cutout) to ``r = R``; between the pitch hinge and the
 blade root is a rigid, massless cuff.  Chordwise positions are fractions of
 chord behind the leading edge.
@@ -77,6 +80,7 @@ FIELD_INFO: dict[str, tuple[str, str]] = {
     "pitch_damping": ("N m s/rad", "assumed: no damping in the control system (not given)"),
     "aerodynamic_centre": ("c", "Table I"),
     "pitch_axis": ("c", "assumed: quarter chord, the usual feathering-axis position"),
+    "wind_point": ("c", "assumed: None, the angle of attack at the aerodynamic centre (steady coefficients at the instantaneous angle of attack, as the paper states); 0.75 is the quasi-steady three-quarter-chord option"),
     "cg_position": ("c", "Table I computation parameters (I 0.02c forward, II neutral, III 0.02c aft of the pitch axis)"),
     "mass_per_length": ("kg/m", "assumed: uniform, chosen for a Lock number of about 8 (typical articulated rotor)"),
     "pitch_radius_of_gyration": ("c", "assumed: 0.2 c about the section C.G., a spar-dominated section "
@@ -152,8 +156,8 @@ class BladeParameters:
     hub_elements : tuple of 5 float
         Hub element lengths e1..e5 divided by ``blade_length``, -.  Table I:
         (0.01, -0.005, 0.02, 0.03, 0.0); directions assumed (lost Fig. 3):
-        e1, e3, e4 radial (>= 0), e2, e5 chordwise (positive towards the
-        leading edge).
+        e1, e3, e4 radial (>= 0), e2 vertical (lag hinge above the flap
+        hinge, along z_F), e5 chordwise (positive towards the leading edge).
     chord : float or callable
         Chord c, m (or ``f(r/R)``).  Table I: 0.4 m, constant.
     twist : float
@@ -177,6 +181,15 @@ class BladeParameters:
     pitch_axis : float
         Feathering (pitch) axis, fraction of chord behind the leading edge.
         Assumed: 0.25, the usual quarter-chord feathering axis.
+    wind_point : float or None
+        Chordwise point, fraction of chord behind the leading edge, whose air
+        velocity defines the section's relative wind and angle of attack; the
+        loads act at the aerodynamic centre either way. Assumed: None, the
+        aerodynamic centre itself: the paper's "steady coefficients at the
+        instantaneous angle of attack" with no pitch-rate term. 0.75 gives the
+        three-quarter-chord point of quasi-steady thin-airfoil theory
+        (Pistolesi), which adds the lift due to pitch rate (but not the
+        apparent-mass pitch damping).
     cg_position : float or callable
         Section centre of gravity, fraction of chord behind the leading edge.
         Table I computation parameters: 0.23 / 0.25 / 0.27 (forward / neutral /
@@ -239,6 +252,7 @@ class BladeParameters:
     pitch_damping: float = 0.0
     aerodynamic_centre: Profile = 0.235
     pitch_axis: float = 0.25
+    wind_point: float | None = None
     cg_position: Profile = 0.23
     mass_per_length: Profile = 9.0
     pitch_radius_of_gyration: float = 0.2
@@ -275,6 +289,11 @@ class BladeParameters:
             if not 0.0 <= v <= 1.0:
                 raise ValueError(f"{name} must lie in [0, 1] (fraction of chord behind the leading edge), got {v!r}")
             set_(name, v)
+        if self.wind_point is not None:
+            v = _real("wind_point", self.wind_point, "None or a fraction of chord in [0, 1]")
+            if not 0.0 <= v <= 1.0:
+                raise ValueError(f"wind_point must be None or lie in [0, 1] (fraction of chord behind the leading edge), got {v!r}")
+            set_("wind_point", v)
         for name in ("inflow_ratio", "collective"):
             v = getattr(self, name)
             if v is not None:

@@ -229,3 +229,35 @@ def test_type_errors_for_missing_dimension_and_non_callables():
         technical_stability(3.0, W, 1.0, dim=2)
     with pytest.raises(TypeError, match="W must be callable"):
         technical_stability(f, None, 1.0, dim=2)
+
+
+def test_practical_reading_along_the_axes_misses_what_the_strict_reading_finds():
+    """The practical reading is an indicator, not a certificate.
+
+    For the caution system, W' = -c (v1^2 + v2^2) + kappa v1 q2 is <= 0 at every state with
+    only one non-zero component (the signed coordinate axes), so the practical reading along
+    the axes reports every azimuth stable, while the strict reading finds W' > 0 on every
+    sphere and certifies nothing.
+    """
+    f, W = caution_system()
+    axes = np.vstack([np.eye(4), -np.eye(4)])
+    practical = technical_stability(f, W, 1.0, dim=4, n_psi=6, test_directions=axes)
+    strict = technical_stability(f, W, 1.0, dim=4, n_psi=6, n_sphere=256)
+    assert practical.reading == "practical" and strict.reading == "strict"
+    assert practical.stable.all()
+    assert not practical.certified  # the practical reading never certifies
+    assert "not a certificate" in practical.message
+    assert not strict.stable.any()
+    # along the axes alpha = min(k1, k2, 1)/2 at A = 1, and sup W on the sphere lambda is
+    # max(k1, k2, 1) lambda^2 / 2: lambda0 = sqrt(min/max) = sqrt(1/4)
+    assert practical.alpha == pytest.approx(0.5, rel=REL)
+    np.testing.assert_allclose(practical.lambda0, 0.5, rtol=REL)
+
+
+def test_test_directions_are_validated():
+    """Test directions must be non-zero rows of the state dimension."""
+    f, W = radial_softening()
+    with pytest.raises(ValueError, match=r"test_directions must have shape \(k, 2\)"):
+        technical_stability(f, W, 1.0, dim=2, test_directions=np.eye(3))
+    with pytest.raises(ValueError, match="finite and non-zero"):
+        technical_stability(f, W, 1.0, dim=2, test_directions=[[0.0, 0.0]])

@@ -1,0 +1,1 @@
+"""Cached generated code (see rotorlyap.derivation)."""

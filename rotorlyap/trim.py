@@ -1,0 +1,180 @@
+"""Hover trim: the collective pitch for which the rotor thrust equals the helicopter weight.
+
+The thrust is ``n_blades`` times the vertical aerodynamic force of one blade at its hover
+equilibrium (:meth:`rotorlyap.blade.Blade.equilibrium`), with the induced inflow of
+:mod:`rotorlyap.inflow` (momentum theory for thrust = weight, or ``params.inflow_ratio``).
+Since that inflow already assumes thrust = weight, the trimmed state is self-consistent.
+
+The equilibrium is followed by continuation along the flap angle from the unloaded blade, so
+the trim lands on the branch of equilibria connected to it.  With destabilising pitch-flap
+coupling this branch can fold in the collective (past a largest collective there is no
+equilibrium near it), which a continuation in the collective could not pass.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from functools import lru_cache
+
+import numpy as np
+
+from .parameters import BladeParameters
+
+__all__ = ["HoverTrim", "hover_trim", "TrimError"]
+
+
+class TrimError(RuntimeError):
+    """The hover trim did not converge."""
+
+
+@dataclass(frozen=True)
+class HoverTrim:
+    """Result of :func:`hover_trim`.
+
+    Attributes
+    ----------
+    collective : float
+        Collective pitch at the pitch hinge (pitch of the root section), rad.
+    equilibrium : numpy.ndarray
+        Hover equilibrium state ``(beta, zeta, theta, 0, 0, 0)`` at that collective, rad.
+    thrust : float
+        Rotor thrust at the equilibrium, N.
+    weight : float
+        Target thrust (helicopter weight), N.
+    inflow : float
+        Mean induced inflow ratio lambda_0 used, -.
+    thrust_coefficient : float
+        ``thrust / (rho pi R^2 (Omega R)^2)``, -.
+    iterations : int
+        Function evaluations of the root finder.
+    """
+
+    collective: float
+    equilibrium: np.ndarray
+    thrust: float
+    weight: float
+    inflow: float
+    thrust_coefficient: float
+    iterations: int
+
+
+class _Branch:
+    """Hover equilibria of one blade parametrised by the flap angle (continuation).
+
+    For a given flap angle ``beta`` the lag angle, the pitch angle and the collective that
+    make the blade an equilibrium are solved together; unlike the collective, ``beta`` grows
+    monotonically along the branch that starts at the unloaded blade, so the parametrisation
+    passes folds of the branch in the collective.
+    """
+
+    def __init__(self, params: BladeParameters):
+        from .blade import Blade
+
+        self.blade = Blade(replace(params, collective=0.0, cyclic_cos=0.0, cyclic_sin=0.0))
+        self.calls = 0
+
+    def at(self, beta: float, start: np.ndarray) -> tuple[float, np.ndarray, float]:
+        """Thrust (N), equilibrium state and collective at flap angle ``beta``.
+
+        ``start`` holds the starting (lag, pitch, collective), rad.
+        """
+        from scipy.optimize import root
+
+        self.calls += 1
+
+        def residual(u):
+            b = self.blade._with_collective(u[2])
+            return b.rhs(0.0, np.array([beta, u[0], u[1], 0.0, 0.0, 0.0]))[3:]
+
+        sol = root(residual, start, method="hybr", options={"xtol": 1e-13})
+        # scale-free acceptance: the Newton correction (finite-difference Jacobian) in rad
+        h = 1e-7
+        J = np.column_stack([(residual(sol.x + h * e) - residual(sol.x - h * e)) / (2 * h)
+                             for e in np.eye(3)])
+        try:
+            du = np.linalg.solve(J, residual(sol.x))
+            err = float(np.abs(du).max())
+        except np.linalg.LinAlgError:
+            err = np.inf
+        if not err < 1e-9:
+            raise TrimError(f"hover_trim: no equilibrium found at flap angle {beta:.5f} rad "
+                            f"({sol.message}, Newton correction {err:.3g} rad)")
+        b = self.blade._with_collective(sol.x[2])
+        z = np.array([beta, sol.x[0], sol.x[1], 0.0, 0.0, 0.0])
+        return float(b.rotor_thrust(0.0, z)), z, float(sol.x[2])
+
+
+@lru_cache(maxsize=64)
+def hover_trim(params: BladeParameters, step: float = 0.01, max_flap: float = 0.5,
+               xtol: float = 1e-13) -> HoverTrim:
+    """Trim the collective so that the hover thrust equals the weight.
+
+    The hover equilibria are followed along the flap angle from the unloaded blade (``beta``
+    where the collective is zero, found first) upwards in steps of ``step`` until the thrust
+    exceeds the weight; Brent's method then finds the flap angle, hence the collective, at
+    which thrust = weight.  Parametrising by ``beta`` rather than by the collective passes
+    folds of the branch (where, past a largest collective, equilibria cease to exist).
+
+    Parameters
+    ----------
+    params : BladeParameters
+        ``params.collective`` is ignored (replaced by the trimmed value).
+    step : float
+        Flap-angle step of the continuation, rad.
+    max_flap : float
+        Largest flap angle tried, rad.
+    xtol : float
+        Tolerance on the flap angle, rad.
+
+    Returns
+    -------
+    HoverTrim
+
+    Raises
+    ------
+    TrimError
+        In vacuum, if the weight is not positive, if no equilibrium is found along the branch,
+        or if the thrust does not reach the weight below ``max_flap``.
+    """
+    from scipy.optimize import brentq
+
+    from .inflow import mean_inflow
+
+    weight = params.helicopter_mass * params.gravity
+    if params.air_density <= 0.0:
+        raise TrimError("hover_trim: no thrust in vacuum (air_density = 0); give a collective")
+    if weight <= 0.0:
+        raise TrimError(f"hover_trim: the weight helicopter_mass * gravity = {weight!r} N must be > 0")
+    branch = _Branch(params)
+    # the unloaded blade: zero collective
+    z0 = branch.blade.equilibrium()
+    b_lo = float(z0[0])
+    t_lo, z_lo, c_lo = branch.at(b_lo, np.array([z0[1], z0[2], 0.0]))
+    if t_lo >= weight:
+        raise TrimError(f"hover_trim: thrust {t_lo:.6g} N at zero collective already reaches the "
+                        f"weight {weight:.6g} N")
+    while True:
+        b_hi = b_lo + step
+        if b_hi > max_flap:
+            raise TrimError(f"hover_trim: thrust {t_lo:.6g} N at flap angle {b_lo:.4g} rad is still "
+                            f"below the weight {weight:.6g} N (max_flap = {max_flap} rad)")
+        t_hi, z_hi, c_hi = branch.at(b_hi, np.array([z_lo[1], z_lo[2], c_lo]))
+        if t_hi >= weight:
+            break
+        b_lo, t_lo, z_lo, c_lo = b_hi, t_hi, z_hi, c_hi
+    start = np.array([z_lo[1], z_lo[2], c_lo])
+    try:
+        beta0, res = brentq(lambda b: branch.at(b, start)[0] - weight, b_lo, b_hi,
+                            xtol=xtol, full_output=True, maxiter=100)
+    except (RuntimeError, ValueError) as exc:
+        raise TrimError(f"hover_trim: Brent's method failed between flap angles {b_lo:.4f} and "
+                        f"{b_hi:.4f} rad: {exc}") from exc
+    if not res.converged:  # pragma: no cover
+        raise TrimError(f"hover_trim: Brent's method did not converge ({res.flag})")
+    thrust, z, theta0 = branch.at(beta0, start)
+    R = params.radius
+    ct = thrust / (params.air_density * math.pi * R * R * (params.rotor_speed * R) ** 2)
+    return HoverTrim(collective=theta0, equilibrium=z, thrust=thrust, weight=weight,
+                     inflow=mean_inflow(params, 0.0), thrust_coefficient=ct,
+                     iterations=branch.calls)
