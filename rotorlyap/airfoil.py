@@ -4,7 +4,7 @@ Two models share one interface, ``coefficients(alpha) -> (cl, cd, cm)``:
 
 * :class:`Airfoil` -- a parametric full-range model of a cambered section:
   a linear lift curve rounded quadratically into the maximum lift, the
-  Viterna-Corrigan post-stall extrapolation [ViternaCorrigan1982]_ out to
+  Viterna-Corrigan post-stall extrapolation [ViternaCorrigan1982] out to
   90 deg, and a reverse-flow branch around +-180 deg in which the section acts
   as a thin, early-stalling plate with its trailing edge leading.
 * :class:`LinearAirfoil` -- ``cl = a alpha``, ``cd = cd0``, ``cm = 0`` for
@@ -19,21 +19,21 @@ positive ``cl`` at ``alpha`` near pi means a force *towards the lower
 surface*.  The normal-force coefficient (towards the upper surface) is
 ``cn = cl cos(alpha) + cd sin(alpha)``.
 
-Citation keys refer to ``.notes/h1_refs.bib``.
+Citation keys refer to the report's ``references.bib``.
 
 References
 ----------
-.. [Abbott1959] I. H. Abbott and A. E. von Doenhoff, *Theory of Wing
-   Sections*, Dover, 1959, Appendix IV (NACA 23012 data).
-.. [JacobsClay1935] E. N. Jacobs and W. C. Clay, "Characteristics of the
-   N.A.C.A. 23012 airfoil from tests in the full-scale and variable-density
-   tunnels", NACA Report 530, 1935.
-.. [ViternaCorrigan1982] L. A. Viterna and R. D. Corrigan, "Fixed pitch rotor
-   performance of large horizontal axis wind turbines", NASA CP-2230, 1982.
-.. [Hoerner1965] S. F. Hoerner, *Fluid-Dynamic Drag*, 1965.
-.. [SheldahlKlimas1981] R. E. Sheldahl and P. C. Klimas, "Aerodynamic
-   characteristics of seven symmetrical airfoil sections through
-   180-degree angle of attack ...", SAND80-2114, Sandia, 1981.
+- [Abbott1959] I. H. Abbott and A. E. von Doenhoff, *Theory of Wing
+  Sections*, Dover, 1959, Appendix IV (NACA 23012 data).
+- [JacobsClay1935] E. N. Jacobs and W. C. Clay, "Characteristics of the
+  N.A.C.A. 23012 airfoil from tests in the full-scale and variable-density
+  tunnels", NACA Report 530, 1935.
+- [ViternaCorrigan1982] L. A. Viterna and R. D. Corrigan, "Fixed pitch rotor
+  performance of large horizontal axis wind turbines", NASA CP-2230, 1982.
+- [Hoerner1965] S. F. Hoerner, *Fluid-Dynamic Drag*, 1965.
+- [SheldahlKlimas1981] R. E. Sheldahl and P. C. Klimas, "Aerodynamic
+  characteristics of seven symmetrical airfoil sections through
+  180-degree angle of attack ...", SAND80-2114, Sandia, 1981.
 """
 
 from __future__ import annotations
@@ -168,14 +168,14 @@ class Airfoil:
     """Parametric full-range static model of a cambered airfoil section.
 
     The angle of attack is wrapped to [-pi, pi) and split into a forward-flow
-    half-circle (|alpha| <= pi/2) and a reverse-flow half-circle (around
+    half-circle (``|alpha| <= pi/2``) and a reverse-flow half-circle (around
     +-pi, local angle ``delta = alpha -+ pi``).  On each half:
 
     * attached flow: ``cl = a (alpha - alpha_0)``, rounded by a parabola (C1,
       slope ``a`` to slope 0) into ``cl_max`` at ``alpha_stall`` and into
       ``cl_min`` at ``alpha_stall_negative``; drag from the polar
       ``cd = cd_min + drag_rise (cl - cl_cd_min)**2``; ``cm = cm_ac``;
-    * post stall: the Viterna-Corrigan extrapolation [ViternaCorrigan1982]_
+    * post stall: the Viterna-Corrigan extrapolation [ViternaCorrigan1982]
       anchored at the stall point, ``cl = cd_max/2 sin 2a + A2 cos^2 a / sin a``,
       ``cd = cd_max sin^2 a + B2 cos a``, entered through a C1 smooth step of
       width ``stall_blend``; it tends to the flat plate at 90 deg
@@ -183,7 +183,7 @@ class Airfoil:
     * moment: beyond stall and in reverse flow the normal force
       ``cn = cl cos a + cd sin a`` acts at a centre of pressure that travels
       linearly with the angle, ``x_cp = 0.25 + |alpha| / (2 pi)``: quarter
-      chord at 0, mid-chord at 90 deg (flat plate broadside, [Hoerner1965]_),
+      chord at 0, mid-chord at 90 deg (flat plate broadside, [Hoerner1965]),
       three-quarter chord -- the quarter chord measured from the trailing
       edge -- at 180 deg; so ``cm = -cn (x_cp - x_ac)``.
 
@@ -481,7 +481,7 @@ NACA23012 = Airfoil(
     name="NACA 23012",
 )
 
-#: Source or reason of each number of :data:`NACA23012` (keys of ``.notes/h1_refs.bib``).
+#: Source or reason of each number of :data:`NACA23012` (keys of the report's ``references.bib``).
 #: The Abbott1959 numbers are the section summary values of the book's Appendix IV
 #: (the same data as NACA Report 824, AbbottEtAl1945); they were not re-read from a
 #: scanned page when this module was written: check them against the book.

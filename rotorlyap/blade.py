@@ -4,8 +4,8 @@
 cached generated code, never re-derived at import) together with quasi-steady strip-theory
 aerodynamics, hinge dampers and the induced inflow of :mod:`rotorlyap.inflow`.
 
-State and units (``.notes/BLADE_SPEC.md``)
------------------------------------------
+State and units
+---------------
 ``z = (beta, zeta, theta, beta', zeta', theta')``: flap, lag and pitch hinge angles (rad) and
 their derivatives with respect to the azimuth ``psi = Omega t`` (rad/rad).  Every method takes
 ``z`` of shape ``(..., 6)`` and ``psi`` a float or an array broadcasting with ``z.shape[:-1]``.
@@ -539,8 +539,8 @@ class Blade:
         """Linearisation ``d h / d z`` of the right-hand side, shape (..., 6, 6).
 
         Central differences with step ``step`` (default :data:`JACOBIAN_STEP` = 1e-6 rad or
-        rad/rad) in every state; truncation error ~ step^2 |h'''| / 6 and round-off
-        ~ eps |h| / step, both about 1e-10 relative for this model.
+        rad/rad) in every state; truncation error ``~ step^2 |h'''| / 6`` and round-off
+        ``~ eps |h| / step``, both about 1e-10 relative for this model.
         """
         z = np.asarray(z, dtype=np.float64)
         psi = np.asarray(psi, dtype=np.float64)
@@ -738,7 +738,7 @@ class EnergyFunction:
     ``T2 + U`` minus its value at rest, so ``W' = 0`` exactly.
 
     The derivative along the motion, ``W' = dW/dpsi + grad_x W . f(psi, x)`` with
-    ``f = rhs(psi, xi + x) - xi'``, is computed analytically from generated code:
+    ``f = rhs(psi, xi + x) - xi'``, is computed analytically from generated code::
 
         grad_xq W = 1/2 Omega^2 x_r^T (dM/dq) x_r + grad U(q) - grad U(q_s),
         grad_xr W = Omega^2 M(q) x_r,
@@ -752,17 +752,21 @@ class EnergyFunction:
 
     Conditions of the theorem (Narkiewicz & Lucjanek, section 2), on ``||x|| < H``:
 
-    (c) continuity and differentiability: ``W`` is analytic in ``x`` and ``psi`` (polynomial in
-        the rates, trigonometric in the angles) for every state.
-    (d) positivity: ``W(psi, 0) = 0``, ``grad W(psi, 0) = 0``; ``W > 0`` for small ``x != 0``
-        iff ``M(q_s)`` (always) and ``Hess U(q_s)`` are positive definite:
-        :meth:`positivity` checks this.  Globally, ``W`` is not positive on every ball: the
-        centrifugal potential is periodic in the angles and has other stationary points, so
-        ``H`` must stay below the first of them (checked numerically by sampling, not here).
-    (e), (f) periodicity of ``W`` and its first derivatives: ``M`` and ``U`` depend on psi only
-        through ``theta_c(psi)`` and ``xi(psi)``, both ``2 pi``-periodic.
-    (g) a property of the sphere extrema of ``W``, checked by the algorithm itself
-        (:func:`rotorlyap.lyapunov.technical_stability`).
+
+    * (c) continuity and differentiability: ``W`` is analytic in ``x`` and ``psi`` (polynomial in
+      the rates, trigonometric in the angles) for every state.
+
+    * (d) positivity: ``W(psi, 0) = 0``, ``grad W(psi, 0) = 0``; ``W > 0`` for small ``x != 0``
+      iff ``M(q_s)`` (always) and ``Hess U(q_s)`` are positive definite:
+      :meth:`positivity` checks this.  Globally, ``W`` is not positive on every ball: the
+      centrifugal potential is periodic in the angles and has other stationary points, so
+      ``H`` must stay below the first of them (checked numerically by sampling, not here).
+
+    * (e), (f) periodicity of ``W`` and its first derivatives: ``M`` and ``U`` depend on psi only
+      through ``theta_c(psi)`` and ``xi(psi)``, both ``2 pi``-periodic.
+
+    * (g) a property of the sphere extrema of ``W``, checked by the algorithm itself
+      (:func:`rotorlyap.lyapunov.technical_stability`).
 
     Attributes
     ----------

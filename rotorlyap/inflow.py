@@ -11,21 +11,21 @@ give the larger inflow:
 Thrust = weight at every advance ratio (no fuselage drag, no download), a
 stated simplification consistent with the paper's steady motion.
 
-Citation keys refer to ``.notes/h1_refs.bib``.
+Citation keys refer to the report's ``references.bib``.
 
 References
 ----------
-.. [Glauert1926] H. Glauert, "A general theory of the autogyro", ARC R&M 1111, 1926.
-.. [Johnson1980] W. Johnson, *Helicopter Theory*, Princeton University Press, 1980
-   (momentum theory in forward flight; the linear inflow variation).
-.. [Johnson2013] W. Johnson, *Rotorcraft Aeromechanics*, Cambridge University
-   Press, 2013.
-.. [Leishman2006] J. G. Leishman, *Principles of Helicopter Aerodynamics*, 2nd
-   ed., Cambridge University Press, 2006 (momentum theory; the linear inflow
-   models and their k_x).
-.. [Coleman1945] R. P. Coleman, A. M. Feingold and C. W. Stempin, NACA ARR L5E10, 1945.
-.. [Drees1949] J. M. Drees, J. Helicopter Assoc. Great Britain 3(2), 1949.
-.. [PittPeters1981] D. M. Pitt and D. A. Peters, Vertica 5(1), 1981.
+- [Glauert1926] H. Glauert, "A general theory of the autogyro", ARC R&M 1111, 1926.
+- [Johnson1980] W. Johnson, *Helicopter Theory*, Princeton University Press, 1980
+  (momentum theory in forward flight; the linear inflow variation).
+- [Johnson2013] W. Johnson, *Rotorcraft Aeromechanics*, Cambridge University
+  Press, 2013.
+- [Leishman2006] J. G. Leishman, *Principles of Helicopter Aerodynamics*, 2nd
+  ed., Cambridge University Press, 2006 (momentum theory; the linear inflow
+  models and their k_x).
+- [Coleman1945] R. P. Coleman, A. M. Feingold and C. W. Stempin, NACA ARR L5E10, 1945.
+- [Drees1949] J. M. Drees, J. Helicopter Assoc. Great Britain 3(2), 1949.
+- [PittPeters1981] D. M. Pitt and D. A. Peters, Vertica 5(1), 1981.
 """
 
 from __future__ import annotations
@@ -53,7 +53,7 @@ __all__ = [
 #: Names accepted by :func:`kx_factor` (and ``BladeParameters.inflow_model``).
 INFLOW_MODELS: tuple[str, ...] = ("uniform", "glauert", "drees", "pitt-peters", "coleman")
 
-#: Glauert's constant longitudinal inflow gradient [Glauert1926]_, [Johnson1980]_.
+#: Glauert's constant longitudinal inflow gradient [Glauert1926], [Johnson1980].
 GLAUERT_KX = 1.2
 
 
@@ -101,7 +101,7 @@ def _check_nonneg(name: str, x: ArrayLike) -> NDArray[np.float64]:
 
 
 def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: int = 50) -> float | NDArray[np.float64]:
-    """Mean induced inflow ratio from momentum theory [Johnson1980]_, [Leishman2006]_.
+    """Mean induced inflow ratio from momentum theory [Johnson1980], [Leishman2006].
 
     Hover: ``lambda = sqrt(C_T / 2)``.  Forward flight, untilted disc:
     ``lambda = C_T / (2 sqrt(mu^2 + lambda^2))``, solved by Newton's method on
@@ -158,7 +158,7 @@ def wake_skew(mu: ArrayLike, lam: ArrayLike) -> float | NDArray[np.float64]:
     """Wake skew angle ``chi = atan2(mu, lambda)``, rad.
 
     0 in hover (wake straight down), pi/2 for an edgewise wake
-    (``lambda -> 0``), untilted disc [Leishman2006]_.
+    (``lambda -> 0``), untilted disc [Leishman2006].
 
     Parameters
     ----------
@@ -179,15 +179,15 @@ def wake_skew(mu: ArrayLike, lam: ArrayLike) -> float | NDArray[np.float64]:
 def kx_factor(model: str, mu: ArrayLike, lam: ArrayLike) -> float | NDArray[np.float64]:
     """Longitudinal inflow gradient ``k_x`` of a linear inflow model.
 
-    ========== ======================================== =========================
-    model      k_x                                      source
-    ========== ======================================== =========================
-    uniform    0                                        --
-    glauert    1.2 for mu > 0, 0 in hover               [Glauert1926]_, [Johnson1980]_
-    drees      4/3 (1 - cos chi - 1.8 mu^2) / sin chi   [Drees1949]_, [Leishman2006]_
-    pitt-peters 15 pi / 23 tan(chi/2)                   [PittPeters1981]_, [Leishman2006]_
-    coleman    tan(chi/2)                               [Coleman1945]_, [Leishman2006]_
-    ========== ======================================== =========================
+    =========== ======================================== =================================
+    model       k_x                                      source
+    =========== ======================================== =================================
+    uniform     0                                        --
+    glauert     1.2 for mu > 0, 0 in hover               [Glauert1926], [Johnson1980]
+    drees       4/3 (1 - cos chi - 1.8 mu^2) / sin chi   [Drees1949], [Leishman2006]
+    pitt-peters 15 pi / 23 tan(chi/2)                    [PittPeters1981], [Leishman2006]
+    coleman     tan(chi/2)                               [Coleman1945], [Leishman2006]
+    =========== ======================================== =================================
 
     ``chi = atan2(mu, lam)`` is the wake skew angle.  All models give 0 in
     hover (mu = 0), where no direction on the disc is preferred; Glauert's

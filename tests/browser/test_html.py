@@ -1,0 +1,387 @@
+"""Every page of the built book, opened in headless Chromium the way a reader opens it.
+
+The pages are loaded from ``file://`` URLs, as a reader who opens ``_build/html`` offline
+does, in Debian's Chromium with the flags of this machine's notes (no sandbox as root, no GPU,
+no background networking); CI has no network beyond the package registries, so anything the
+book fetched from the internet would show as a failed or foreign request here.
+
+How the browser is driven, and why
+----------------------------------
+Through the Chrome DevTools Protocol over ``--remote-debugging-pipe`` (``cdp_pipe.py`` beside
+this file, standard library only). The alternative, ``chromium --headless --dump-dom`` plus a
+separate ``--screenshot`` run with ``--virtual-time-budget``, only guesses when MathJax is
+done and cannot ask the page anything; over the protocol the test
+
+* waits for the real end of typesetting (``MathJax.startup.promise``), for the fonts
+  (``document.fonts.ready``) and for every image, instead of a time budget;
+* reads the live DOM: ``naturalWidth`` of every ``<img>``, the ``mjx-container`` elements
+  MathJax produced, the text left visible;
+* records every request the page made, and every uncaught JavaScript exception;
+* takes a full-page screenshot (``captureBeyondViewport``) of the very state it checked;
+* runs one browser for all pages (a few seconds in all), with no TCP port and no WebSocket
+  library to install.
+
+What is checked, page by page
+-----------------------------
+* images: every ``<img>`` has finished loading with ``naturalWidth > 0`` (an SVG without an
+  intrinsic size may report 0: it must then be an existing, well-formed SVG file), and the
+  page shows at least as many images as its HTML file holds;
+* equations: on a page with math, MathJax 3 was loaded from the book's own
+  ``_static/mathjax/`` (never a CDN), every math node (``span.math``, ``div.math``) holds an
+  ``mjx-container``, the number of containers equals the number of math nodes of the HTML
+  file, no TeX error is shown (an ``merror``, or an undefined macro, which MathJax draws in
+  red), and no raw TeX (``\\(``, ``\\[``, ``$$``,
+  ``\\begin{``, ``$...\\cmd...$``) is left in the visible text outside code;
+* links: every relative ``href``/``src`` (links, scripts, style sheets, images, downloads)
+  resolves to a file inside ``_build/html``, and every ``#anchor`` exists in its target page;
+* offline: every request is to a ``file:``/``data:`` URL, none failed, no uncaught JavaScript
+  exception;
+* the figures of the method chapters each link their data as a CSV file;
+* a screenshot of the whole page is saved under ``_build/screenshots/`` (same path as the
+  page, ``.png``) for a person to look at.
+
+Without ``_build/html`` (the plain test run happens before the book is built) or without
+Chromium the tests skip with the reason; ``ROTORLYAP_REQUIRE_BROWSER=1`` (set by ``.ci/run``)
+turns those skips into failures (see ``conftest.py``).
+"""
+
+from __future__ import annotations
+
+import re
+import struct
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from functools import lru_cache
+from html.parser import HTMLParser
+from pathlib import Path
+from urllib.parse import unquote, urlsplit
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[2]
+HTML = ROOT / "_build" / "html"
+SCREENSHOTS = ROOT / "_build" / "screenshots"
+
+SKIP_DIRS = {"_static", "_sources", "_images", "_downloads"}
+MATHJAX_SCRIPT = "_static/mathjax/tex-chtml.js"
+# Chapters whose every figure must link its data as CSV (issue 6).
+CSV_FIGURE_PAGES = ("book/01_technical_stability.html", "book/02_algorithm.html")
+
+
+def built_pages() -> list[str]:
+    if not (HTML / "index.html").is_file():
+        return []
+    return sorted(
+        p.relative_to(HTML).as_posix() for p in HTML.rglob("*.html")
+        if not SKIP_DIRS.intersection(p.relative_to(HTML).parts[:-1])
+    )
+
+
+PAGES = built_pages() or [pytest.param(
+    None, id="no-build",
+    marks=pytest.mark.skip(reason=f"no built book in {HTML}: build it first with "
+                                  "`jupyter-book build . --all -W --keep-going`"))]
+
+
+# ---------------------------------------------------------------------------------------
+# The HTML files as written by Sphinx (what the page must show once scripts have run)
+
+class _StaticScan(HTMLParser):
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.ids: set[str] = set()
+        self.math = 0
+        self.images = 0
+        self.refresh: str | None = None
+        self.scripts: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if a.get("id"):
+            self.ids.add(a["id"])
+        if tag == "a" and a.get("name"):
+            self.ids.add(a["name"])
+        if tag in ("span", "div") and "math" in (a.get("class") or "").split():
+            self.math += 1
+        if tag == "img":
+            self.images += 1
+        if tag == "script" and a.get("src"):
+            self.scripts.append(a["src"])
+        if tag == "meta" and (a.get("http-equiv") or "").lower() == "refresh":
+            m = re.search(r"url=(.+)$", a.get("content") or "", re.I)
+            self.refresh = m.group(1).strip(" '\"") if m else None
+
+
+@lru_cache(maxsize=None)
+def static_scan(path: Path) -> _StaticScan:
+    scan = _StaticScan()
+    scan.feed(path.read_text(encoding="utf-8"))
+    return scan
+
+
+# ---------------------------------------------------------------------------------------
+# The page as the browser shows it
+
+COLLECT = r"""
+(async () => {
+  const t0 = performance.now();
+  const wait = (ms) => new Promise(r => setTimeout(r, ms));
+  const mjScript = document.querySelector('script[src*="mathjax"]');
+  let mathjaxError = null;
+  if (mjScript) {
+    while (!(window.MathJax && MathJax.startup && MathJax.startup.promise)) {
+      if (performance.now() - t0 > 30000) { mathjaxError = 'MathJax did not start within 30 s'; break; }
+      await wait(50);
+    }
+    if (!mathjaxError) {
+      try { await MathJax.startup.promise; } catch (e) { mathjaxError = String(e); }
+    }
+  }
+  // TeX that MathJax could not read: an merror, or an undefined macro (drawn in red by the
+  // noundefined extension of tex-chtml.js instead of an merror)
+  const texErrors = [];
+  if (!mathjaxError && window.MathJax && MathJax.startup && MathJax.startup.document && MathJax.startup.toMML) {
+    for (const item of MathJax.startup.document.math) {
+      const mml = MathJax.startup.toMML(item.root);
+      if (/<merror|<mtext mathcolor="red">\\/.test(mml)) texErrors.push(String(item.math).slice(0, 160));
+    }
+  }
+  await document.fonts.ready;
+  await Promise.all([...document.images].map(img => img.complete ? null :
+      new Promise(r => { img.addEventListener('load', r); img.addEventListener('error', r); })));
+
+  const skip = 'pre, code, script, style, textarea, kbd, samp, noscript, template, mjx-container, .highlight';
+  const texRe = /\\\(|\\\)|\\\[|\\\]|\$\$|\\begin\{|\\end\{|\$[^$\s][^$]*?\\[A-Za-z]+[^$]*?\$/;
+  const rawTex = [];
+  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+  for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+    const el = n.parentElement;
+    if (!el || el.closest(skip) || !el.checkVisibility()) continue;
+    if (texRe.test(n.data)) rawTex.push(n.data.trim().slice(0, 160));
+  }
+  const mathNodes = [...document.querySelectorAll('span.math, div.math')];
+  const links = [...document.querySelectorAll('a[href], link[href], script[src], img[src], source[src], iframe[src]')]
+      .map(e => [e.tagName.toLowerCase(), e.getAttribute('href') ?? e.getAttribute('src')]);
+  const figures = [...document.querySelectorAll('figure, div.figure')].map(f => ({
+      id: f.id || (f.querySelector('[id]') || {}).id || '',
+      csv: [...f.querySelectorAll('a[href]')].map(a => a.getAttribute('href')).filter(h => /\.csv$/.test(h))}));
+  return {
+    href: location.href,
+    title: document.title,
+    mathjaxVersion: (window.MathJax && MathJax.version) || null,
+    mathjaxScript: mjScript ? mjScript.getAttribute('src') : null,
+    mathjaxError,
+    mathNodes: mathNodes.length,
+    mathNodesUntypeset: mathNodes.filter(m => !m.querySelector('mjx-container'))
+        .map(m => m.textContent.trim().slice(0, 160)),
+    containers: document.querySelectorAll('mjx-container').length,
+    merrors: [...document.querySelectorAll('mjx-merror')].map(e => e.getAttribute('data-mjx-error') || e.textContent),
+    texErrors,
+    rawTex,
+    images: [...document.images].map(i => ({src: i.getAttribute('src'), complete: i.complete,
+                                            width: i.naturalWidth, height: i.naturalHeight})),
+    links,
+    ids: [...document.querySelectorAll('[id]')].map(e => e.id)
+        .concat([...document.querySelectorAll('a[name]')].map(e => e.getAttribute('name'))),
+    figures,
+    seconds: (performance.now() - t0) / 1000,
+  };
+})()
+"""
+
+
+@dataclass
+class Rendered:
+    page: str
+    info: dict
+    requests: list[str] = field(default_factory=list)
+    failed: list[str] = field(default_factory=list)
+    exceptions: list[str] = field(default_factory=list)
+    screenshot: Path | None = None
+    screenshot_size: tuple[int, int] = (0, 0)
+
+
+_rendered: dict[str, Rendered] = {}
+
+
+def _record(events: list[dict], into: Rendered, urls: dict[str, str]) -> None:
+    for ev in events:
+        method, params = ev["method"], ev.get("params", {})
+        if method == "Network.requestWillBeSent":
+            urls[params["requestId"]] = params["request"]["url"]
+            into.requests.append(params["request"]["url"])
+        elif method == "Network.loadingFailed" and not params.get("canceled"):
+            into.failed.append(f"{urls.get(params['requestId'], '?')}: {params.get('errorText')}")
+        elif method == "Runtime.exceptionThrown":
+            d = params.get("exceptionDetails", {})
+            into.exceptions.append(d.get("exception", {}).get("description") or d.get("text", "?"))
+
+
+def render(tab, page: str) -> Rendered:
+    """Load one page (once per session), check-ready it, screenshot it, return what it showed."""
+    if page in _rendered:
+        return _rendered[page]
+    path = HTML / page
+    out = Rendered(page, {})
+    urls: dict[str, str] = {}
+    events = tab.navigate(path.as_uri())
+    _record(events, out, urls)
+    if static_scan(path).refresh and not any(e["method"] == "Page.loadEventFired" for e in events):
+        # a redirect page (index.html): wait for the page it sends the browser to
+        tab.browser.wait_event("Page.loadEventFired", session=tab.session, timeout=30)
+    out.info = tab.evaluate(COLLECT, timeout=90)
+    _record(tab.browser.drain_events(tab.session), out, urls)
+    out.screenshot = SCREENSHOTS / (page[:-len(".html")] + ".png")
+    out.screenshot_size = tab.screenshot(out.screenshot, max_height=200_000)
+    _record(tab.browser.drain_events(tab.session), out, urls)
+    _rendered[page] = out
+    return out
+
+
+@pytest.fixture
+def shown(tab, request) -> Rendered:
+    page = request.node.callspec.params["page"]
+    return render(tab, page)
+
+
+# ---------------------------------------------------------------------------------------
+# The checks
+
+def _toc_files(node) -> list[str]:
+    files = []
+    if isinstance(node, dict):
+        for key in ("root", "file"):
+            if key in node:
+                files.append(node[key])
+        for value in node.values():
+            if isinstance(value, (list, dict)):
+                files += _toc_files(value)
+    elif isinstance(node, list):
+        for item in node:
+            files += _toc_files(item)
+    return files
+
+
+def test_every_page_of_the_toc_was_built(html_root):
+    toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
+    expected = {f"{Path(f).with_suffix('').as_posix()}.html" for f in _toc_files(toc)}
+    expected |= {"index.html", "genindex.html", "search.html"}
+    assert "book/api.html" in expected
+    missing = sorted(p for p in expected if not (html_root / p).is_file())
+    assert not missing, f"pages of _toc.yml missing from the build: {missing}"
+    assert expected <= set(built_pages())
+
+
+def test_mathjax_is_served_from_the_book(html_root):
+    local = html_root / MATHJAX_SCRIPT
+    assert local.is_file(), f"{local} missing: the offline MathJax extension did not run"
+    assert (html_root / "_static/mathjax/output/chtml/fonts/woff-v2").is_dir()
+    for page in built_pages():
+        html = (html_root / page).read_text(encoding="utf-8")
+        assert not re.search(r"cdn\.jsdelivr|cdnjs|mathjax@|polyfill\.io", html), (
+            f"{page} refers to a CDN")
+        for src in static_scan(html_root / page).scripts:
+            if "mathjax" in src.lower():
+                assert not urlsplit(src).scheme, f"{page} loads MathJax from {src}"
+                resolved = ((html_root / page).parent / urlsplit(src).path).resolve()
+                assert resolved == local.resolve(), f"{page} loads MathJax from {src}"
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_images_load(shown, page):
+    bad = [img for img in shown.info["images"] if not img["complete"] or img["width"] <= 0]
+    for img in list(bad):
+        src = urlsplit(img["src"] or "").path
+        target = ((HTML / page).parent / unquote(src)).resolve()
+        if img["complete"] and src.endswith(".svg") and target.is_file():
+            if ET.parse(target).getroot().tag.endswith("svg"):
+                bad.remove(img)  # an SVG without an intrinsic size
+    assert not bad, f"images that did not load on {page}: {bad}"
+    assert len(shown.info["images"]) >= static_scan(HTML / page).images
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_equations_are_typeset(shown, page):
+    info = shown.info
+    expected = static_scan(HTML / page).math
+    assert info["mathNodes"] == expected
+    if expected:
+        assert info["mathjaxError"] is None, info["mathjaxError"]
+        assert (info["mathjaxVersion"] or "").startswith("3."), "MathJax 3 did not load"
+        assert info["mathjaxScript"] and not urlsplit(info["mathjaxScript"]).scheme
+        assert not info["mathNodesUntypeset"], f"math not typeset: {info['mathNodesUntypeset'][:5]}"
+        assert info["containers"] == expected, (
+            f"{info['containers']} mjx-container elements for {expected} math nodes")
+    assert not info["merrors"], f"TeX errors shown: {info['merrors'][:5]}"
+    assert not info["texErrors"], f"TeX MathJax could not read: {info['texErrors'][:5]}"
+    assert not info["rawTex"], f"raw TeX left in the visible text: {info['rawTex'][:5]}"
+
+
+@lru_cache(maxsize=None)
+def _ids_of(path: Path) -> frozenset:
+    return frozenset(static_scan(path).ids)
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_internal_links_resolve(shown, page):
+    # links are relative to the page the browser ended on (index.html redirects)
+    here = Path(unquote(urlsplit(shown.info["href"]).path))
+    own_ids = set(shown.info["ids"]) | _ids_of(here)
+    broken = []
+    for tag, ref in shown.info["links"]:
+        parts = urlsplit(ref)
+        if parts.scheme or ref.startswith("//"):
+            continue  # external (http, https, mailto, data, javascript): not fetched offline
+        path, frag = unquote(parts.path), unquote(parts.fragment)
+        target = (here.parent / path).resolve() if path else here.resolve()
+        if not target.is_file():
+            broken.append(f"<{tag}> {ref}: no file {target}")
+            continue
+        if HTML.resolve() not in target.parents:
+            broken.append(f"<{tag}> {ref}: outside the built book")
+            continue
+        if frag and target.suffix == ".html":
+            ids = own_ids if target == here.resolve() else _ids_of(target)
+            if frag not in ids:
+                broken.append(f"<{tag}> {ref}: no id {frag!r} in {target.relative_to(HTML.resolve())}")
+    refresh = static_scan(HTML / page).refresh
+    if refresh:
+        target = ((HTML / page).parent / urlsplit(refresh).path).resolve()
+        if not target.is_file():
+            broken.append(f"redirect to {refresh}: no such page")
+        assert shown.info["href"] == target.as_uri(), "the redirect was not followed"
+    assert not broken, f"{len(broken)} broken internal links on {page}:\n" + "\n".join(broken[:20])
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_works_offline(shown, page):
+    foreign = [u for u in shown.requests if urlsplit(u).scheme not in ("file", "data", "blob", "about")]
+    assert not foreign, f"{page} requested {foreign[:10]}"
+    assert not shown.failed, f"{page}: failed loads {shown.failed[:10]}"
+    assert not shown.exceptions, f"{page}: uncaught JavaScript exceptions {shown.exceptions[:5]}"
+
+
+@pytest.mark.parametrize("page", [p for p in CSV_FIGURE_PAGES if p in built_pages()] or [
+    pytest.param(None, id="no-build", marks=pytest.mark.skip(reason="no built book"))])
+def test_every_figure_links_its_data_as_csv(shown, page):
+    figures = shown.info["figures"]
+    assert figures, f"no figures on {page}"
+    missing = [f["id"] for f in figures if not f["csv"]]
+    assert not missing, f"figures without a CSV download on {page}: {missing}"
+    for f in figures:
+        for href in f["csv"]:
+            assert "_downloads/" in href and (HTML / page).parent.joinpath(unquote(href)).is_file()
+
+
+def _png_size(path: Path) -> tuple[int, int]:
+    head = path.read_bytes()[:24]
+    assert head[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG"
+    return struct.unpack(">II", head[16:24])
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_screenshot_saved(shown, page):
+    width, height = _png_size(shown.screenshot)
+    assert (width, height) == shown.screenshot_size
+    assert width == 1280 and height >= 300, f"{shown.screenshot}: {width} x {height}"
