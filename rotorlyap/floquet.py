@@ -44,6 +44,18 @@ Methods (``method=``)
     Classical fourth-order Runge-Kutta on a uniform grid, ``A`` sampled once on the
     ``2 n_steps + 1`` points ``j T / (2 n_steps)``; global error ``O(h**4)``.
 
+Non-smooth ``A``
+----------------
+The error control of DOP853 assumes a smooth right-hand side. An ``A(psi)`` with kinks (for
+example from piecewise-linear airfoil data crossed by the local angle of attack) or with
+round-off noise (a finite-difference Jacobian, about 1e-11 relative) forces tiny steps at
+``rtol = 1e-11``: millions of evaluations, minutes of computing, for an accuracy that the kinks
+limit anyway (the fixed-step methods lose their order at a kink too, converging like
+``h**2``). ``max_evaluations`` stops such runs with advice; for such ``A`` use
+``method="magnus6"`` with ``vectorized=True`` and a fixed ``n_steps`` (1024-4096 steps per
+period cost well under a second for a 6 x 6 system) and judge the accuracy by comparing two
+step counts.
+
 For the fixed-step methods ``n_steps=None`` doubles the number of steps from 16 until two
 successive monodromy matrices agree to ``rtol * max|M| + atol`` (at most 2**16 steps, with a
 warning if not reached); :attr:`FloquetResult.error_estimate` is then the Richardson estimate
@@ -147,8 +159,10 @@ class _System:
     (``vectorized=True``, then it must return ``(k, n, n)``).
     """
 
-    def __init__(self, A: SystemMatrix, vectorized: bool = False):
+    def __init__(self, A: SystemMatrix, vectorized: bool = False,
+                 max_evaluations: int | None = None):
         self.count = 0
+        self.limit = max_evaluations
         if callable(A):
             self.fun = A
             self.vectorized = bool(vectorized)
@@ -201,6 +215,15 @@ class _System:
         return out
 
     def _call_raw(self, psi: np.ndarray) -> np.ndarray:
+        if self.limit is not None and self.count + psi.size > self.limit:
+            raise ValueError(
+                f"A(psi) was evaluated at {self.count} azimuths and max_evaluations="
+                f"{self.limit} would be exceeded: the adaptive integration is not converging, "
+                "which usually means A(psi) is not smooth (kinks, e.g. from piecewise-linear "
+                "airfoil data) or noisy (e.g. a finite-difference Jacobian). Loosen rtol "
+                "(e.g. 1e-8), use a fixed-step method with n_steps (e.g. method='magnus6', "
+                "n_steps=2048), or raise max_evaluations"
+            )
         self.count += psi.size
         if self.vectorized:
             return self._check(self.fun(psi), psi)
@@ -409,6 +432,7 @@ def monodromy(
     vectorized: bool = False,
     rtol: float = 1e-11,
     atol: float = 1e-13,
+    max_evaluations: int | None = 1_000_000,
 ) -> np.ndarray:
     """Monodromy matrix ``Phi(T)`` of ``x' = A(psi) x``: ``Phi' = A Phi`` from ``Phi(0) = I``.
 
@@ -433,6 +457,11 @@ def monodromy(
         ``A`` accepts an array of azimuths and returns ``(k, n, n)``.
     rtol, atol : float
         Relative and absolute tolerances (of DOP853, or of the step doubling).
+    max_evaluations : int or None
+        Stop with a ValueError once ``A`` would be evaluated at more azimuths than this
+        (None: no limit). A smooth 6 x 6 system needs a few thousand; a non-smooth or noisy
+        ``A`` can make DOP853 at ``rtol = 1e-11`` take millions (minutes): see the error
+        message for remedies.
 
     Returns
     -------
@@ -443,13 +472,14 @@ def monodromy(
     ------
     ValueError
         Non-positive ``period``; ``A`` not square, of the wrong shape or non-finite; unknown
-        ``method``; bad ``n_steps``/``n_intervals``; failed integration.
+        ``method``; bad ``n_steps``/``n_intervals``; failed integration; more than
+        ``max_evaluations`` evaluations of ``A``.
     TypeError
         ``A`` neither callable nor an array, or complex.
     """
     return floquet_multipliers(
         A, period, method=method, n_steps=n_steps, n_intervals=n_intervals,
-        vectorized=vectorized, rtol=rtol, atol=atol,
+        vectorized=vectorized, rtol=rtol, atol=atol, max_evaluations=max_evaluations,
     ).monodromy
 
 
@@ -698,6 +728,7 @@ def floquet_multipliers(
     rtol: float = 1e-11,
     atol: float = 1e-13,
     tol: float = 1e-9,
+    max_evaluations: int | None = 1_000_000,
 ) -> FloquetResult:
     """Floquet multipliers and characteristic exponents of ``x' = A(psi) x``.
 
@@ -707,7 +738,7 @@ def floquet_multipliers(
         ``A(psi)``, period ``period``; see :func:`monodromy` (also for a constant array).
     period : float
         The period ``T`` (> 0), units of ``psi``.
-    method, n_steps, n_intervals, vectorized, rtol, atol
+    method, n_steps, n_intervals, vectorized, rtol, atol, max_evaluations
         Integration of the monodromy matrix, see :func:`monodromy`.
     tol : float
         Margin of the stability test: ``stable`` is ``max |mu| < 1 - tol`` (>= 0).
@@ -738,7 +769,9 @@ def floquet_multipliers(
     rtol = _positive_float("rtol", rtol)
     atol = _positive_float("atol", atol)
     tol = _nonnegative_float("tol", tol)
-    sys = _System(A, vectorized)
+    if max_evaluations is not None:
+        max_evaluations = _positive_int("max_evaluations", max_evaluations)
+    sys = _System(A, vectorized, max_evaluations)
     mono = _compute_monodromy(sys, period, method, n_steps, n_intervals, rtol, atol)
     eig = np.linalg.eigvals(sys.constant) if sys.constant is not None else None
     return _result(mono, period, tol, eig)

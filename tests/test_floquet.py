@@ -351,8 +351,9 @@ def test_multipliers_sorted_by_decreasing_modulus():
 
 def test_invalid_inputs_raise_clear_errors():
     """Non-positive or non-finite period, non-square or non-finite A, A(psi) of the wrong
-    shape or non-finite, unknown method, n_steps with dop853, bad branch -> ValueError naming
-    the problem; A neither callable nor array, or complex -> TypeError."""
+    shape or non-finite, unknown method, n_steps with dop853, bad branch, more evaluations of A
+    than max_evaluations -> ValueError naming the problem; A neither callable nor array, or
+    complex -> TypeError."""
     A = lambda p: A_OSC  # noqa: E731
     with pytest.raises(ValueError, match="period must be a finite number > 0"):
         floquet_multipliers(A, 0.0)
@@ -380,6 +381,8 @@ def test_invalid_inputs_raise_clear_errors():
         floquet_multipliers(A, 1.0, method="rk4", n_steps=0)
     with pytest.raises(ValueError, match="branch must be an integer"):
         modal_properties([1j], 1.0, branch=0.5)
+    with pytest.raises(ValueError, match="max_evaluations=50 would be exceeded"):
+        floquet_multipliers(A, 1.0, max_evaluations=50)
     with pytest.raises(TypeError, match="callable"):
         floquet_multipliers("A", 1.0)
     with pytest.raises(TypeError, match="real"):
