@@ -341,7 +341,7 @@ class BladeParameters:
             if not np.all(np.isfinite(vals)):
                 raise ValueError(f"{name} must be finite on the span, got {v!r}")
             if kind == "positive" and not np.all(vals > 0):
-                raise ValueError(f"{name} must be > 0 on the span, got {v!r} (min {vals.min()!r})")
+                raise ValueError(f"{name} must be > 0 on the span, got {v!r} (smallest value on the span: {float(vals.min()):.6g})")
             if kind == "fraction" and not np.all((vals >= 0) & (vals <= 1)):
                 raise ValueError(f"{name} must lie in [0, 1] (fraction of chord behind the leading edge) "
                                  f"on the span, got {v!r}")

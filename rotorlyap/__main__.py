@@ -1,0 +1,7 @@
+"""``python -m rotorlyap``: see :mod:`rotorlyap.cli`."""
+
+import sys
+
+from .cli import main
+
+sys.exit(main())
