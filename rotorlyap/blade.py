@@ -670,6 +670,22 @@ class Blade:
             xi = self.equilibrium()
         return EnergyFunction(self, xi, dxi)
 
+    def quadratic_function(self, xi: ArrayLike | Callable | None = None, Q: ArrayLike | None = None,
+                           dxi: Callable | None = None, **options):
+        """A quadratic Liapunov function ``x^T P(psi) x`` about ``xi`` from the periodic Lyapunov
+        equation of this blade linearised there; see
+        :func:`rotorlyap.quadratic.quadratic_function` (same arguments; ``options`` are passed
+        on: ``scales``, ``n_steps``, ``label``).
+
+        Raises
+        ------
+        ValueError
+            If the linearised blade is not asymptotically stable (no quadratic function exists).
+        """
+        from .quadratic import quadratic_function
+
+        return quadratic_function(self, xi, Q, dxi, **options)
+
     # ------------------------------------------------------------------ kernels for W
     @property
     def has_cyclic(self) -> bool:

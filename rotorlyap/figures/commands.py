@@ -1,0 +1,101 @@
+"""Regenerate the data (CSV) and pictures (PNG) of the paper's Figs 4-8 into a folder.
+
+Used by ``python -m rotorlyap figures --out DIR``. Each figure calls the same data and
+drawing functions as the book (:mod:`rotorlyap.figures.paper`), so the files match the
+book's figures (with coarser grids under ``quick=True``).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+__all__ = ["regenerate_figures"]
+
+
+def regenerate_figures(out: Path, *, quick: bool = False,
+                       progress: Callable[[int, int, str], None] | None = None) -> list[Path]:
+    """Compute and save Figs 4-8 (one PNG and one CSV each; Fig 8 for both readings).
+
+    Parameters
+    ----------
+    out : pathlib.Path
+        Output folder (must exist).
+    quick : bool
+        Coarse grids (a smoke test in seconds; the pictures are then not the book's).
+    progress : callable, optional
+        ``progress(i, n, label)`` called before each figure.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from . import paper
+    from .export import figure_csv
+
+    out = Path(out)
+    n_psi = 12 if quick else 72
+    cg_sweep = np.linspace(0.21, 0.28, 3 if quick else 8)
+    mu_grid = (0.0, 0.15, 0.25) if quick else paper.MU_GRID
+    mu_strict = (0.0, 0.25) if quick else paper.MU_GRID_STRICT
+    mu7 = (0.0, 0.15, 0.25) if quick else (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
+    cases = ("forward",) if quick else paper.CASES
+
+    def fig4():
+        data = paper.hover_trim_data(cg_sweep)
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+        paper.plot_hover_trim(data, axes)
+        return {"fig4_hover_trim": (data, fig)}
+
+    def fig5():
+        data = paper.hover_rate_data(cg_sweep)
+        fig, axes = plt.subplots(2, 2, figsize=(11.5, 8.6))
+        paper.plot_hover_rate(data, axes.ravel())
+        return {"fig5_hover_rate": (data, fig)}
+
+    def fig6():
+        data = paper.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0, 4.0, 8.0), n_psi=n_psi)
+        fig, axes = plt.subplots(1, 2, figsize=(11.5, 4.3), gridspec_kw=dict(width_ratios=(1.6, 1)))
+        paper.plot_w_spheres(data, axes)
+        return {"fig6_w_spheres": (data, fig)}
+
+    def fig7():
+        data = paper.rate_azimuth_data("forward", mu7, n_psi=n_psi)
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4.3), sharey=True)
+        paper.plot_rate_azimuth(data, axes)
+        return {"fig7_rate_azimuth": (data, fig)}
+
+    def fig8():
+        made = {}
+        for reading, mus in (("practical", mu_grid), ("strict", mu_strict)):
+            data = paper.regions_data(cases, mus, reading=reading, n_psi=n_psi)
+            fig = plt.figure(figsize=(4.6 * len(cases), 5.0))
+            for k in range(len(cases)):
+                ax = fig.add_subplot(1, len(cases), k + 1, projection="polar")
+                paper.plot_regions_polar(data, ax, k, title=f"{cases[k]} C.G.\n{data.label}")
+                ax.title.set_y(1.12)
+            made[f"fig8_regions_{reading}"] = (data, fig)
+        return made
+
+    steps = [("Fig 4: hover trim", fig4), ("Fig 5: W' in hover against C.G.", fig5),
+             ("Fig 6: W over spheres at mu = 0.15", fig6), ("Fig 7: W' against azimuth", fig7),
+             ("Fig 8: regions of instability, both readings", fig8)]
+    written: list[Path] = []
+    for i, (label, make) in enumerate(steps, start=1):
+        if progress is not None:
+            progress(i, len(steps), label)
+        for name, (data, fig) in make().items():
+            png = out / f"{name}.png"
+            fig.tight_layout()
+            fig.savefig(png, dpi=120)
+            plt.close(fig)
+            written += [png, Path(figure_csv(data, out / f"{name}.csv"))]
+    return written
