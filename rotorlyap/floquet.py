@@ -70,6 +70,10 @@ from dataclasses import dataclass, field
 from typing import Callable, Union
 
 import numpy as np
+
+from ._checks import nonnegative_float as _nonnegative_float
+from ._checks import positive_float as _positive_float
+from ._checks import positive_int as _positive_int
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 
@@ -98,32 +102,7 @@ SystemMatrix = Union[MatrixFunction, np.ndarray]
 # --------------------------------------------------------------------------------------
 
 
-def _positive_float(name: str, value) -> float:
-    if isinstance(value, bool):
-        raise TypeError(f"{name} must be a real number, got {value!r}")
-    try:
-        v = float(value)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a real number, got {value!r}") from exc
-    if not np.isfinite(v) or v <= 0:
-        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
-    return v
 
-
-def _nonnegative_float(name: str, value) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a real number, got {value!r}") from exc
-    if not np.isfinite(v) or v < 0:
-        raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
-    return v
-
-
-def _positive_int(name: str, value, minimum: int = 1) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
-    return int(value)
 
 
 def _real_square(name: str, value) -> np.ndarray:

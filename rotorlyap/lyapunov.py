@@ -27,6 +27,8 @@ from typing import Callable
 
 import numpy as np
 
+from ._checks import positive_float as _positive_float
+from ._checks import positive_int as _positive_int
 from .sampling import sphere_extremum, unit_sphere_points
 
 __all__ = ["TechnicalStabilityResult", "technical_stability", "orbital_derivative"]
@@ -194,20 +196,6 @@ def orbital_derivative(
     return _Checked(f, W, None, x.shape[1], h).dw(psi, x)
 
 
-def _positive_float(name: str, value) -> float:
-    try:
-        v = float(value)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a real number, got {value!r}") from exc
-    if not np.isfinite(v) or v <= 0:
-        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
-    return v
-
-
-def _positive_int(name: str, value, minimum: int = 1) -> int:
-    if isinstance(value, bool) or int(value) != value or value < minimum:
-        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
-    return int(value)
 
 
 def technical_stability(
