@@ -279,6 +279,9 @@ class Blade:
         self._phi = col(phi)
         self._qn = col(0.5 * p.air_density * c * self.weights)  # force factor x |w| w
         self._mn = col(0.5 * p.air_density * c * c * self.weights)  # moment factor x |w|^2
+        # pitch-damping couple 0.5 rho U^2 c^2 cm_q (q c / 2U) = (rho c^3 cm_q / 4) U q
+        self._dn = col(0.25 * p.air_density * p.cm_pitch_rate * c ** 3 * self.weights)
+        self._pitch_damped = p.cm_pitch_rate != 0.0
         self._aero = p.air_density > 0.0
         # Induced inflow lambda_i(r, psi) = a(r) + b(r) cos psi (Glauert form, checked).
         from .inflow import induced_inflow
@@ -359,6 +362,11 @@ class Blade:
         Fy = qn * (cd * u_y + cl * u_z)
         Fz = qn * (cd * u_z - cl * u_y)
         Mx_ac = self._mn * V2 * cm
+        if self._pitch_damped:
+            # pitch rate of the section relative to the hub frame H (which carries the
+            # rotational relative wind): w_x - Omega (z_H . x_B), rad/s
+            q_rel = T[12] - self.omega * T[35]
+            Mx_ac = Mx_ac + self._dn * Vm * q_rel
         sFy = Fy.sum(axis=0)
         sFz = Fz.sum(axis=0)
         Mx = (ry * Fz - rz * Fy + Mx_ac).sum(axis=0)

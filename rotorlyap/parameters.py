@@ -43,14 +43,22 @@ __all__ = [
     "FIELD_INFO",
     "INFLOW_MODELS",
     "TABLE_I_AIRFOIL",
+    "THIN_AIRFOIL_CM_Q",
     "parameter_table",
 ]
 
 
 #: Section centre-of-gravity positions of the paper's three cases, fraction of
-#: chord behind the leading edge (neutral = on the assumed pitch axis, 0.25 c;
-#: forward/backward = 0.02 c either side, Table I computation parameters).
-CG_POSITIONS: dict[str, float] = {"forward": 0.23, "neutral": 0.25, "backward": 0.27}
+#: chord behind the leading edge: neutral = at the Table I aerodynamic centre,
+#: 0.235 c (the only chordwise reference Table I gives, and the point where a
+#: C.G. is neutral for pitch-flap flutter); forward/backward = 0.02 c either
+#: side (Table I computation parameters).
+CG_POSITIONS: dict[str, float] = {"forward": 0.215, "neutral": 0.235, "backward": 0.255}
+
+#: Pitch-damping derivative of quasi-steady thin-airfoil theory: the couple
+#: ``-pi rho b^3 U q`` (b = c/2) of Theodorsen's loads with C(k) = 1, as a
+#: moment coefficient per unit of the non-dimensional pitch rate ``q c / (2U)``.
+THIN_AIRFOIL_CM_Q: float = -0.5 * math.pi
 
 #: The Table I section: the NACA 23012 model with its moment reference moved
 #: to the Table I aerodynamic centre, 0.235 c, so that the airfoil's ``cm`` is
@@ -81,7 +89,10 @@ FIELD_INFO: dict[str, tuple[str, str]] = {
     "aerodynamic_centre": ("c", "Table I"),
     "pitch_axis": ("c", "assumed: quarter chord, the usual feathering-axis position"),
     "wind_point": ("c", "assumed: None, the angle of attack at the aerodynamic centre (steady coefficients at the instantaneous angle of attack, as the paper states); 0.75 is the quasi-steady three-quarter-chord option"),
-    "cg_position": ("c", "Table I computation parameters (I 0.02c forward, II neutral, III 0.02c aft of the pitch axis)"),
+    "cm_pitch_rate": ("-", "assumed: -pi/2, the pitch damping of quasi-steady thin-airfoil theory (Theodorsen, C(k) = 1); "
+                           "0 = static coefficients only"),
+    "cg_position": ("c", "Table I computation parameters (I 0.02c forward, II neutral, III 0.02c aft of the "
+                         "aerodynamic centre; neutral = at the a.c. assumed)"),
     "mass_per_length": ("kg/m", "assumed: uniform, chosen for a Lock number of about 8 (typical articulated rotor)"),
     "pitch_radius_of_gyration": ("c", "assumed: 0.2 c about the section C.G., a spar-dominated section "
                                       "(a homogeneous plate would give 0.29 c)"),
@@ -101,7 +112,7 @@ FIELD_INFO: dict[str, tuple[str, str]] = {
 _POSITIVE = ("radius", "blade_length", "rotor_speed", "helicopter_mass", "pitch_radius_of_gyration")
 _NONNEGATIVE = ("pitch_stiffness", "lag_damping", "flap_stiffness", "lag_stiffness", "flap_damping",
                 "pitch_damping", "air_density", "gravity")
-_FINITE = ("twist", "pitch_flap_coupling", "cyclic_cos", "cyclic_sin")
+_FINITE = ("twist", "pitch_flap_coupling", "cyclic_cos", "cyclic_sin", "cm_pitch_rate")
 _FRACTION = ("pitch_axis",)
 # profiles (float or callable of r/R) and what they must satisfy
 _PROFILES = {"chord": "positive", "mass_per_length": "positive",
@@ -190,11 +201,23 @@ class BladeParameters:
         three-quarter-chord point of quasi-steady thin-airfoil theory
         (Pistolesi), which adds the lift due to pitch rate (but not the
         apparent-mass pitch damping).
+    cm_pitch_rate : float
+        Pitch-damping derivative ``cm_q`` of the section, -: a couple
+        ``0.5 rho U^2 c^2 cm_q (q c / (2 U))`` about the spanwise axis, where
+        ``U`` is the section's in-plane air speed and ``q`` its pitch rate
+        relative to the rotating hub frame (which carries the rotational
+        relative wind; rad/s).  Assumed: ``-pi/2``
+        (:data:`THIN_AIRFOIL_CM_Q`), the couple ``-pi rho b^3 U q`` of
+        quasi-steady thin-airfoil theory (Theodorsen's loads with C(k) = 1,
+        about the quarter chord): the paper's "quasi-steady" aerodynamics with
+        its one pitch-rate term.  0 keeps the static coefficients only, with no
+        aerodynamic pitch damping at all; must be <= 0 (a negative damping
+        derivative would feed energy into pitch).
     cg_position : float or callable
         Section centre of gravity, fraction of chord behind the leading edge.
-        Table I computation parameters: 0.23 / 0.25 / 0.27 (forward / neutral /
-        backward, 0.02 c about the pitch axis; "neutral" = on the pitch axis is
-        assumed).  Default: forward.
+        Table I computation parameters: 0.215 / 0.235 / 0.255 (forward /
+        neutral / backward, 0.02 c about the aerodynamic centre; "neutral" = at
+        the Table I aerodynamic centre is assumed).  Default: forward.
     mass_per_length : float or callable
         Blade mass per unit span, kg/m.  Assumed: 9.0 kg/m, uniform, which gives
         a Lock number of about 8 (typical of articulated rotors) with the
@@ -253,7 +276,8 @@ class BladeParameters:
     aerodynamic_centre: Profile = 0.235
     pitch_axis: float = 0.25
     wind_point: float | None = None
-    cg_position: Profile = 0.23
+    cm_pitch_rate: float = THIN_AIRFOIL_CM_Q
+    cg_position: Profile = 0.215
     mass_per_length: Profile = 9.0
     pitch_radius_of_gyration: float = 0.2
     n_blades: int = 4
@@ -284,6 +308,9 @@ class BladeParameters:
             set_(name, v)
         for name in _FINITE:
             set_(name, _real(name, getattr(self, name), "any finite value"))
+        if self.cm_pitch_rate > 0:
+            raise ValueError(f"cm_pitch_rate must be <= 0 (a damping derivative; 0 = no aerodynamic pitch "
+                             f"damping, -pi/2 = thin-airfoil theory), got {self.cm_pitch_rate!r}")
         for name in _FRACTION:
             v = _real(name, getattr(self, name), "a fraction of chord in [0, 1]")
             if not 0.0 <= v <= 1.0:
@@ -364,8 +391,8 @@ class BladeParameters:
         Parameters
         ----------
         cg : {"forward", "neutral", "backward"}
-            Section C.G. 0.02 c ahead of, on, or 0.02 c behind the pitch axis
-            (0.23, 0.25, 0.27 c behind the leading edge).
+            Section C.G. 0.02 c ahead of, on, or 0.02 c behind the Table I
+            aerodynamic centre (0.215, 0.235, 0.255 c behind the leading edge).
         **overrides
             Further field values (e.g. ``air_density=0.0``).
 

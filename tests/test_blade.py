@@ -150,7 +150,7 @@ def test_positive_collective_gives_lift_upward_flap_and_thrust(table_i):
     """Positive collective (small given inflow): positive thrust, positive aerodynamic flap
     moment, upward coning, positive angle of attack outboard; more collective, more thrust."""
     out = []
-    for c in (0.05, 0.08):
+    for c in (0.08, 0.11):
         b = Blade(replace(table_i, collective=c, inflow_ratio=0.02))
         z = b.equilibrium()
         Q = b.aerodynamic_forces(0.0, z)
@@ -313,3 +313,38 @@ def test_lift_at_aerodynamic_centre_ahead_of_pitch_axis_pitches_nose_up(table_i)
         lift = b.rotor_thrust(0.0, z) / b.params.n_blades
     assert Q[0.20] - Q[0.30] > 0
     assert Q[0.20] - Q[0.30] == pytest.approx(lift * 0.1 * base.chord, rel=0.02)
+
+
+# ------------------------------------------------------------------ aerodynamic pitch damping
+def test_pitch_damping_couple_is_the_thin_airfoil_value_pi_rho_b3_U_q():
+    """Quasi-steady thin-airfoil theory (Theodorsen, C(k) = 1): a section pitching at rate q in
+    a stream U feels the couple -pi rho b^3 U q (b = c/2). At zero hinge angles, no inflow and
+    no lift (zero collective, linear section without drag or moment), a pitch rate theta'
+    gives U = Omega r and q = Omega theta' exactly, so the generalised pitch force changes by
+    -pi/8 rho c^3 Omega^2 theta' (R^2 - r_0^2)/2 (Gauss quadrature is exact for r), and the
+    flap and lag forces do not change."""
+    base = BladeParameters(airfoil=LinearAirfoil(5.7, 0.0), collective=0.0, inflow_ratio=0.0,
+                           inflow_model="uniform", gravity=0.0, pitch_flap_coupling=0.0)
+    rate = 1e-3
+    z = np.array([0.0, 0.0, 0.0, 0.0, 0.0, rate])
+    q_damped = Blade(base).aerodynamic_forces(0.0, z)
+    q_static = Blade(replace(base, cm_pitch_rate=0.0)).aerodynamic_forces(0.0, z)
+    p = base
+    r0 = p.radius - p.blade_length
+    expected = -np.pi / 8 * p.air_density * p.chord ** 3 * p.rotor_speed ** 2 * rate * (p.radius ** 2 - r0 ** 2) / 2
+    assert q_damped[2] - q_static[2] == pytest.approx(expected, rel=1e-6)
+    np.testing.assert_allclose(q_damped[:2], q_static[:2], atol=1e-12 * abs(expected))
+
+
+def test_pitch_damping_leaves_the_equilibrium_and_only_dissipates(table_i):
+    """The couple acts on the pitch rate relative to the rotating hub, which is zero at rest:
+    the hover equilibrium is the same with and without it; in motion it only removes energy,
+    so W' (energy about the equilibrium) is lower with it at every disturbed state."""
+    static = replace(table_i, cm_pitch_rate=0.0)
+    b1, b0 = Blade(table_i), Blade(static)
+    np.testing.assert_allclose(b1.equilibrium(), b0.equilibrium(), atol=1e-12)
+    x = np.random.default_rng(5).normal(size=(400, 6)) * np.array([0.02, 0.02, 0.01, 0.02, 0.005, 0.05])
+    d1 = b1.energy_function().dW(0.0, x)
+    d0 = Blade(replace(static, collective=b1.params.collective)).energy_function(b1.equilibrium()).dW(0.0, x)
+    assert np.all(d1 <= d0 + 1e-9 * np.abs(d0).max())
+    assert np.mean(d1 < d0 - 1e-6 * np.abs(d0).max()) > 0.9

@@ -37,12 +37,13 @@ def test_table_i_values_are_reproduced(p):
     assert p.aerodynamic_centre == 0.235
 
 
-@pytest.mark.parametrize("cg, x", [("forward", 0.23), ("neutral", 0.25), ("backward", 0.27)])
-def test_table_i_three_cg_positions_are_0p02c_about_the_pitch_axis(cg, x):
-    """Cases I-III: C.G. 0.02c ahead of, on, and 0.02c behind the (assumed quarter-chord) pitch axis."""
+@pytest.mark.parametrize("cg, x", [("forward", 0.215), ("neutral", 0.235), ("backward", 0.255)])
+def test_table_i_three_cg_positions_are_0p02c_about_the_aerodynamic_centre(cg, x):
+    """Cases I-III: C.G. 0.02c ahead of, at, and 0.02c behind the Table I aerodynamic centre."""
     q = BladeParameters.table_i(cg)
     assert q.cg_position == pytest.approx(x)
-    assert q.cg_position - q.pitch_axis == pytest.approx({"forward": -0.02, "neutral": 0.0, "backward": 0.02}[cg])
+    assert q.cg_position - q.aerodynamic_centre == pytest.approx(
+        {"forward": -0.02, "neutral": 0.0, "backward": 0.02}[cg])
     assert CG_POSITIONS[cg] == x
 
 
@@ -57,7 +58,7 @@ def test_table_i_unknown_cg_name_is_rejected_listing_allowed_names():
 
 def test_table_i_accepts_overrides():
     q = BladeParameters.table_i("backward", air_density=0.0, gravity=0.0)
-    assert q.air_density == 0.0 and q.gravity == 0.0 and q.cg_position == 0.27
+    assert q.air_density == 0.0 and q.gravity == 0.0 and q.cg_position == 0.255
 
 
 def test_lock_number_is_about_8(p):
@@ -109,7 +110,7 @@ def test_spanwise_profiles_accept_floats_and_callables(p):
     assert q.chord_at(1.0) == pytest.approx(0.4)
     assert q.chord_at(x).shape == (2, 2)
     assert q.blade_mass == pytest.approx(67.72)
-    assert np.all(q.cg_position_at(x) == 0.23)
+    assert np.all(q.cg_position_at(x) == 0.215)
     assert np.all(q.aerodynamic_centre_at(x) == 0.235)
     assert np.all(q.mass_per_length_at(x) == 10.0)
 
@@ -194,6 +195,9 @@ BAD_VALUES = [
     ("hub_elements", 0.01, TypeError, r"hub_elements must be a sequence of 5 real numbers"),
     ("hub_elements", (0.01, "a", 0.02, 0.03, 0.0), TypeError, r"hub_elements\[1\] \(e2\) must be a real number"),
     ("pitch_axis", 1.2, ValueError, r"pitch_axis must lie in \[0, 1\] .*got 1.2"),
+    ("cm_pitch_rate", 0.5, ValueError, r"cm_pitch_rate must be <= 0 \(a damping derivative.*got 0.5"),
+    ("cm_pitch_rate", float("nan"), ValueError, r"cm_pitch_rate must be finite"),
+    ("cm_pitch_rate", "-pi/2", TypeError, r"cm_pitch_rate must be a real number"),
     ("cg_position", -0.1, ValueError, r"cg_position must lie in \[0, 1\] .*got -0.1"),
     ("aerodynamic_centre", 1.5, ValueError, r"aerodynamic_centre must lie in \[0, 1\]"),
     ("inflow_model", "vortex", ValueError, r"inflow_model must be one of \('uniform', 'glauert', 'drees', "

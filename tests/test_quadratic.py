@@ -119,9 +119,10 @@ def test_paper_steady_motion_gives_a_derivative_linear_in_x():
 
 
 def test_unstable_linearisation_raises_a_clear_error():
-    """Neutral C.G. (hover flutter): no quadratic function exists; the error says why."""
-    b = Blade(BladeParameters.table_i("neutral"), 0.0)
-    with pytest.raises(ValueError, match=r"not asymptotically stable.*spectral radius.*1\.6"):
+    """Backward C.G. without aerodynamic pitch damping (hover flutter): no quadratic function
+    exists; the error says why."""
+    b = Blade(BladeParameters.table_i("backward", cm_pitch_rate=0.0), 0.0)
+    with pytest.raises(ValueError, match=r"not asymptotically stable.*spectral radius.*2\.0"):
         quadratic_function(b)
     with pytest.raises(ValueError, match="not asymptotically stable"):
         b.quadratic_function()
