@@ -118,6 +118,7 @@ def periodic_motion(
     n_points: int = 64,
     tol: float = 1e-10,
     max_iter: int = 30,
+    start=None,
 ) -> PeriodicMotion:
     """The ``2 pi``-periodic solution of the blade equations at advance ratio ``mu``.
 
@@ -126,7 +127,8 @@ def periodic_motion(
     ``D Z - h(psi_j, Z_j)`` with ``D`` the spectral differentiation matrix, solved by
     Newton's method with the exact block Jacobian ``D (x) I - diag(dh/dz(psi_j, Z_j))``
     (:meth:`Blade.jacobian`), all azimuths in one vectorised call. The start is the hover
-    equilibrium; Newton steps are damped (halved) while they do not reduce the residual.
+    equilibrium unless ``start`` is given; Newton steps are damped (halved) while they do not
+    reduce the residual.
     Spectral accuracy: for a smooth solution the error falls faster than any power of
     ``1 / n_points``; ``fourier_error`` reports the size of the highest retained harmonic.
 
@@ -146,6 +148,11 @@ def periodic_motion(
         first flapping harmonics (rad) when trimming, below ``tol``.
     max_iter : int
         Largest number of Newton iterations.
+    start : callable, optional
+        Initial guess ``start(psi) -> states`` of shape ``psi.shape + (6,)`` (for example a
+        simulated motion over its last revolution, interpolated), to reach a periodic motion
+        that Newton's method does not find from the hover equilibrium. Default: the hover
+        equilibrium at every azimuth.
 
     Returns
     -------
@@ -184,7 +191,14 @@ def periodic_motion(
             r = np.concatenate([r, [cos_w @ Z[:, 0], sin_w @ Z[:, 0]]])
         return r
 
-    Z = np.tile(hover.equilibrium(), (n, 1))
+    if start is None:
+        Z = np.tile(hover.equilibrium(), (n, 1))
+    elif not callable(start):
+        raise TypeError(f"start must be None or a callable start(psi) -> states of shape (n, 6), got {start!r}")
+    else:
+        Z = np.asarray(start(psi), dtype=float)
+        if Z.shape != (n, 6) or not np.all(np.isfinite(Z)):
+            raise ValueError(f"start(psi) must return finite states of shape ({n}, 6), got shape {Z.shape}")
     cyc = np.array([base.cyclic_cos, base.cyclic_sin])
     blade = make_blade(cyc)
     r = residual(Z, blade)

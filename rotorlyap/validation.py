@@ -31,6 +31,7 @@ from .simulation import scaled_norm, simulate
 __all__ = [
     "BoundedRuns", "simulate_within", "start_directions", "Validation", "validate",
     "confusion_matrix", "certified_mask", "MotionHistory", "long_run", "classify_motion",
+    "last_revolution",
 ]
 
 TWO_PI = 2.0 * np.pi
@@ -401,3 +402,39 @@ def long_run(f: Callable, x0, psi0: float, n_periods: int, *, A: float = 1.0, sc
     verdict = tuple(classify_motion(peaks[:, i], A, bool(s.escaped[i])) for i in range(s.norm.shape[1]))
     return MotionHistory(label=label, psi=s.psi, x=s.x, norm=s.norm, peaks=peaks, escaped=s.escaped,
                          verdict=verdict, A=float(A))
+
+
+def last_revolution(history: MotionHistory, offset=None, index: int = 0) -> Callable:
+    """The last full revolution of one motion of ``history`` as a function of azimuth.
+
+    Parameters
+    ----------
+    history : MotionHistory
+        From :func:`long_run`.
+    offset : array_like, optional
+        The steady state the disturbances are measured from (shape ``(6,)``): the result is
+        ``offset + x``, the blade's own states. Default: 0.
+    index : int
+        Which motion.
+
+    Returns
+    -------
+    callable
+        ``g(psi)`` -> states of shape ``psi.shape + (n,)``, a cubic interpolant of the last
+        revolution with ``psi`` taken modulo the period: a start for
+        :func:`rotorlyap.periodic_motion.periodic_motion` when a simulation has settled onto
+        a periodic motion that Newton's method does not reach from the hover equilibrium.
+    """
+    from scipy.interpolate import CubicSpline
+
+    step = history.psi[1] - history.psi[0]
+    k = int(round(TWO_PI / step))
+    if history.psi.size < k + 1:
+        raise ValueError("last_revolution: the history is shorter than one revolution")
+    psi = history.psi[-k - 1:]
+    states = history.x[-k - 1:, index]
+    if offset is not None:
+        states = states + np.asarray(offset, dtype=float)
+    spline = CubicSpline(psi, states, axis=0)
+    psi0 = float(psi[0])
+    return lambda az: spline(psi0 + np.mod(np.asarray(az, dtype=float) - psi0, TWO_PI))

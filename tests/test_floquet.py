@@ -387,3 +387,14 @@ def test_invalid_inputs_raise_clear_errors():
         floquet_multipliers("A", 1.0)
     with pytest.raises(TypeError, match="real"):
         floquet_multipliers(lambda p: 1j * np.eye(2), 1.0)
+
+
+def test_public_names_at_the_package_top_level():
+    """rotorlyap.floquet_multipliers and rotorlyap.blade_stability are the package's public
+    entry points for Floquet theory and the blade in the engine."""
+    import rotorlyap
+    from rotorlyap.floquet import floquet_multipliers as fm
+    from rotorlyap.stability import blade_stability as bs
+
+    assert rotorlyap.floquet_multipliers is fm and rotorlyap.blade_stability is bs
+    assert {"floquet_multipliers", "blade_stability", "FloquetResult"} <= set(rotorlyap.__all__)

@@ -52,3 +52,17 @@ def test_bad_arguments(params):
         periodic_motion(params, 0.1, n_points=7)
     with pytest.raises(PeriodicMotionError, match="no periodic solution found"):
         periodic_motion(params, 0.15, max_iter=1, tol=1e-30)
+
+
+def test_start_option_seeds_newton_and_bad_starts_are_refused():
+    """A start equal to the default (the hover equilibrium at every azimuth) gives the same
+    motion; a start of the wrong shape, or not callable, is refused with a clear error."""
+    p = BladeParameters.table_i("forward")
+    xh = Blade(p, 0.0).equilibrium()
+    pm0 = periodic_motion(p, 0.1)
+    pm1 = periodic_motion(p, 0.1, start=lambda psi: np.tile(xh, (psi.size, 1)))
+    np.testing.assert_allclose(pm1.coefficients, pm0.coefficients, atol=1e-12)
+    with pytest.raises(ValueError, match=r"start\(psi\) must return finite states of shape \(64, 6\)"):
+        periodic_motion(p, 0.1, start=lambda psi: np.zeros((psi.size, 3)))
+    with pytest.raises(TypeError, match="start must be None or a callable"):
+        periodic_motion(p, 0.1, start=xh)

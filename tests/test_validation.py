@@ -105,3 +105,15 @@ def test_classify_motion():
     assert classify_motion(np.array([0.5, 5.0, 20.0, 20.1, 20.05, 20.08, 20.06]), 1.0, False) == "limit cycle outside A"
     assert classify_motion(np.array([1.0, 2.0]), 1.0, True) == "unbounded"
     assert classify_motion(np.array([0.1, 1.0, 3.0, 9.0, 27.0]), 1.0, False) == "bounded, not settled"
+
+
+def test_last_revolution_reproduces_a_periodic_motion():
+    """x' = (-x2, x1): the last revolution of the circle x = (cos psi, sin psi), interpolated,
+    is the circle at any azimuth (modulo 2 pi), plus the offset."""
+    from rotorlyap.validation import last_revolution, long_run
+
+    f = lambda psi, x: np.stack([-x[..., 1], x[..., 0]], axis=-1)  # noqa: E731
+    h = long_run(f, [[1.0, 0.0]], 0.0, 3, A=2.0, points_per_period=64, rtol=1e-10, atol=1e-12)
+    g = last_revolution(h, offset=[0.5, 0.0])
+    psi = np.array([0.3, 2.0, 7.5, -1.0])
+    np.testing.assert_allclose(g(psi), np.stack([0.5 + np.cos(psi), np.sin(psi)], axis=-1), atol=1e-6)

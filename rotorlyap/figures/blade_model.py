@@ -318,7 +318,7 @@ def plot_section(data: SchematicData, ax) -> None:
         yc = (xp - xc) * c
         ax.plot(yc, 0, "o", ms=3.5, color=_CG_COLORS[name], zorder=7)
         (tx, ty), ha = text_at.get(name, ((yc, -0.1), "center"))
-        ax.annotate(f"C.G. {_CG_ROMAN[name]} ({name}) {xc:.2f}$c$", (yc, 0), (tx, ty), fontsize=7,
+        ax.annotate(f"C.G. {_CG_ROMAN[name]} ({name}) {xc:.3g}$c$", (yc, 0), (tx, ty), fontsize=7,
                     color=_CG_COLORS[name], ha=ha,
                     arrowprops=dict(arrowstyle="-", color=_CG_COLORS[name], lw=0.6))
     ax.text(xp * c + 0.01, 0.0, "LE", fontsize=7.5, va="center")
@@ -681,7 +681,8 @@ def table_i_rows(params: BladeParameters) -> list[tuple[str, str, str, str]]:
     rows = []
     for name, value, unit, source in parameter_table(params):
         if source.startswith("Table I"):
-            v = "0.23 / 0.25 / 0.27 (I / II / III)" if name == "cg_position" else format_value(value)
+            v = (" / ".join(f"{x:g}" for x in CG_POSITIONS.values()) + " (I / II / III)"
+                 if name == "cg_position" else format_value(value))
             rows.append((TABLE_I_LABELS.get(name, name), f"`{name}`", v, unit))
     return rows
 

@@ -175,7 +175,7 @@ class HoverTrimData:
     inflow: float
 
 
-def hover_trim_data(cg_values=np.linspace(0.21, 0.28, 8), cases=CASES, **overrides) -> HoverTrimData:
+def hover_trim_data(cg_values=np.linspace(0.195, 0.275, 9), cases=CASES, **overrides) -> HoverTrimData:
     """Trim every C.G. of the sweep and every case (:func:`rotorlyap.hover_trim`)."""
     def trims(values):
         out = [hover_trim(case_params(v, **overrides)) for v in values]
@@ -205,7 +205,7 @@ def plot_hover_trim(data: HoverTrimData, axes) -> None:
     xs = np.arange(len(names))
     for i, (case, c) in enumerate(zip(data.case_names, colors)):
         bars = ax.bar(xs + (i - 1) * w, vals[i], w, color=c,
-                      label=f"{case} C.G. ({data.case_cg[i]:.2f} c)")
+                      label=f"{case} C.G. ({data.case_cg[i]:.3g} c)")
         for b, v in zip(bars, vals[i]):
             ax.text(b.get_x() + b.get_width() / 2, v + 0.15, f"{v:.1f}", ha="center", fontsize=6.5)
     ax.set_xticks(xs, names)
@@ -304,7 +304,7 @@ class HoverRateData:
 
 
 def hover_rate_data(
-    cg_values=np.linspace(0.21, 0.28, 8),
+    cg_values=np.linspace(0.195, 0.275, 9),
     *,
     A: float = DEFAULT_A,
     scales=None,
@@ -398,13 +398,13 @@ def plot_hover_rate(data: HoverRateData, axes) -> None:
     ax_a.set_ylabel(r"$W'$ on $\|x\| = A$ (J/rad)")
     ax_a.set_title("(a) $W'$ in hover; dotted: each rate axis (practical)", fontsize=9)
     ax_a.legend(fontsize=6.5, loc="lower left")
-    ax_b.plot(cg, data.eig_max_real, "o-", color="k", label="largest real part (flutter mode)")
+    ax_b.plot(cg, data.eig_max_real, "o-", color="k", label="least-damped mode (largest real part)")
     if np.isfinite(data.eig_real_root).any():
         ax_b.plot(cg, data.eig_real_root, "^--", color="tab:purple", label="largest real root (divergence if > 0)")
     ax_b.axhline(0, color="k", lw=0.6)
     ax_b.fill_between(cg, 0, max(0.05, 1.1 * float(np.nanmax(data.eig_max_real))), color="tab:red", alpha=0.07)
     for c, r, f in zip(cg, data.eig_max_real, data.eig_freq):
-        ax_b.annotate(f"{f:.1f}/rev", (c, r), fontsize=6, xytext=(0, 5), textcoords="offset points", ha="center")
+        ax_b.annotate(f"{f:.2f}/rev", (c, r), fontsize=6, xytext=(0, 5), textcoords="offset points", ha="center")
     ax_b.set_xlabel("section C.G. (fraction of chord)")
     ax_b.set_ylabel(r"eigenvalue real part ($\Omega$)")
     ax_b.set_title("(b) linearised hover: unstable above zero", fontsize=9)
@@ -422,7 +422,7 @@ def plot_hover_rate(data: HoverRateData, axes) -> None:
     ax_c.plot(data.A * np.cos(t), data.A * np.sin(t), color="tab:green", lw=1.5, label=r"$\|x\| = A$")
     ax_c.set_xlabel(r"pitch displacement $\theta / a_\theta$")
     ax_c.set_ylabel(r"flap rate $\beta' / a_{\beta'}$")
-    ax_c.set_title(f"(c) $W'$ on the ($\\theta$, $\\beta'$) plane, C.G. {data.slice_cg:.2f} c (dotted: $W' > 0$)", fontsize=9)
+    ax_c.set_title(f"(c) $W'$ on the ($\\theta$, $\\beta'$) plane, C.G. {data.slice_cg:.3g} c (dotted: $W' > 0$)", fontsize=9)
     ax_c.legend(fontsize=7, loc="upper right")
     cb = ax_c.figure.colorbar(im, ax=ax_c, label="$W'$ (J/rad); two linear scales either side of 0", shrink=0.85)
     cb.set_ticks([lo, 0.5 * lo, 0.0, 0.5 * hi, hi])
@@ -433,7 +433,7 @@ def plot_hover_rate(data: HoverRateData, axes) -> None:
     cmap = _colormaps()["viridis"]
     for i, c in enumerate(cg):
         ax_d.bar(xs + (i - (len(cg) - 1) / 2) * width, vals[i], width, color=cmap(i / max(len(cg) - 1, 1)),
-                 label=f"{c:.2f} c")
+                 label=f"{c:.3g} c")
     ax_d.set_xticks(xs, [f"damper\n{h}" for h in _HINGES] + [f"aero\n{h}" for h in _HINGES], fontsize=7)
     ax_d.axhline(0, color="k", lw=0.6)
     ax_d.set_ylabel("work rate at the strict argmax (J/rad)")
@@ -706,7 +706,7 @@ def _category(res) -> np.ndarray:
 def regions_data(cases=CASES, mu_values=MU_GRID, *, reading: str = "practical", n_psi: int = 72,
                  A: float | None = None, scales=None, test_disturbances=PAPER_TEST_DISTURBANCES,
                  params_overrides: dict | None = None, **engine_options) -> RegionsData:
-    """Run :func:`rotorlyap.blade_stability` for every case and advance ratio.
+    """Run :func:`rotorlyap.stability.blade_stability` for every case and advance ratio.
 
     ``reading="strict"`` ignores ``test_disturbances`` (whole spheres); ``engine_options``
     (``n_sphere``, ...) go to the engine. A strict search at reduced resolution can only

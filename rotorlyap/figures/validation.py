@@ -391,7 +391,7 @@ class ScanData:
 
 def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_values=MU_SCAN,
               n_psi: int = 24, A: float | None = None, **engine_options) -> ScanData:
-    """Run :func:`rotorlyap.blade_stability` for every candidate, case and advance ratio.
+    """Run :func:`rotorlyap.stability.blade_stability` for every candidate, case and advance ratio.
 
     The quadratic functions use the default scales as their coordinates (so ``Q = I`` is
     ``diag(1 / a_i**2)``); the optimised weight is found once per case in hover
@@ -640,14 +640,17 @@ def _check(f, h, scales, rtol) -> float:
     return float(abs(s.norm[-(k + 1):, 0].max() / last - 1.0))
 
 
-def motion_data(*, flutter_periods=(25, 15), forward_mu: float = 0.15, forward_periods: int = 12,
+def motion_data(*, flutter_periods: int = 15, drift_mu: float = 0.05, drift_periods: int = 20,
+                forward_mu: float = 0.15, forward_periods: int = 12,
                 rtol: float = 1e-5, points_per_period: int = 128) -> MotionData:
     """Three experiments, each from two start disturbances (pitch angle ``0.5 a_theta``, and
-    flap rate ``0.5 a_beta'``):
+    flap rate ``0.5 a_beta'``), each measured from the hover equilibrium of its blade:
 
-    * neutral C.G., hover, about the equilibrium (the hover flutter), ``flutter_periods[0]``
+    * backward C.G. in hover *without* the aerodynamic pitch damping (``cm_pitch_rate = 0``),
+      whose hover flutters: what that modelling choice decides, ``flutter_periods``
       revolutions;
-    * backward C.G., hover, ``flutter_periods[1]`` revolutions;
+    * backward C.G. at ``drift_mu``, where no periodic motion is found near the hover
+      equilibrium (the white cells of the rigorous Fig. 8), ``drift_periods`` revolutions;
     * forward C.G. at ``forward_mu`` about the hover equilibrium (the paper's steady motion,
       where its Fig. 8 reading marks instability), ``forward_periods`` revolutions; the
       reference is the periodic motion seen from the hover equilibrium.
@@ -655,38 +658,33 @@ def motion_data(*, flutter_periods=(25, 15), forward_mu: float = 0.15, forward_p
     a = np.asarray(DEFAULT_SCALES)
     x0 = np.array([[0, 0, 0.5, 0, 0, 0], [0, 0, 0, 0.5, 0, 0]]) * a
     starts = (r"$\theta = 0.5 a_\theta$", r"$\beta' = 0.5 a_{\beta'}$")
+    experiments = (
+        (BladeParameters.table_i("backward", cm_pitch_rate=0.0), 0.0, flutter_periods,
+         "backward C.G., hover, no pitch damping"),
+        (BladeParameters.table_i("backward"), drift_mu, drift_periods, f"backward C.G., mu = {drift_mu:g}"),
+        (BladeParameters.table_i("forward"), forward_mu, forward_periods,
+         f"forward C.G., mu = {forward_mu:g}, about the hover equilibrium"),
+    )
     hist, labels, offs, refs, checks = [], [], [], [], []
-    for case, n_per in zip(("neutral", "backward"), flutter_periods):
-        b = Blade(BladeParameters.table_i(case), 0.0)
-        xh = b.equilibrium()
-        f = disturbed_system(b, xh)
-        h = long_run(f, x0, 0.0, n_per, A=DEFAULT_A, scales=a, label=f"{case} C.G., hover", rtol=rtol,
+    for p, mu, n_per, label in experiments:
+        xh = Blade(p, 0.0).equilibrium()
+        f = disturbed_system(Blade(p, mu), xh)
+        h = long_run(f, x0, 0.0, n_per, A=DEFAULT_A, scales=a, label=label, rtol=rtol,
                      atol=rtol * 1e-3, points_per_period=points_per_period)
         hist.append(h)
         labels.append(h.label)
         offs.append(np.broadcast_to(xh, (h.psi.size, 6)).copy())
         refs.append(None)
         checks.append(_check(f, h, a, rtol))
-    p = BladeParameters.table_i("forward")
-    b = Blade(p, forward_mu)
-    xh = Blade(p, 0.0).equilibrium()
-    f = disturbed_system(b, xh)
-    h = long_run(f, x0, 0.0, forward_periods, A=DEFAULT_A, scales=a,
-                 label=f"forward C.G., mu = {forward_mu:g}, about the hover equilibrium", rtol=rtol,
-                 atol=rtol * 1e-3, points_per_period=points_per_period)
-    pm = periodic_motion(p, forward_mu)
-    hist.append(h)
-    labels.append(h.label)
-    offs.append(np.broadcast_to(xh, (h.psi.size, 6)).copy())
-    refs.append(scaled_norm(pm.xi(h.psi) - xh, a))
-    checks.append(_check(f, h, a, rtol))
+    p = experiments[-1][0]
+    refs[-1] = scaled_norm(periodic_motion(p, forward_mu).xi(hist[-1].psi) - offs[-1][0], a)
     return MotionData(histories=tuple(hist), labels=tuple(labels), start_labels=(starts,) * 3,
                       offsets=tuple(offs), reference=tuple(refs), check=tuple(checks))
 
 
 def plot_motions(data: MotionData, axes) -> None:
-    """(a) Peak norm per revolution, every motion (log scale); (b) the pitch angle over the
-    last two revolutions of the flutter experiments; (c) the norm of the forward-flight
+    """(a) Peak norm per revolution, every motion (log scale); (b) the pitch and lag angles
+    over the last two revolutions of the first two experiments; (c) the norm of the forward-flight
     motion about the hover equilibrium against the periodic motion seen from there."""
     ax = axes[0]
     colors = ("tab:purple", "tab:red", "tab:blue")
@@ -702,12 +700,14 @@ def plot_motions(data: MotionData, axes) -> None:
     ax = axes[1]
     for h, off, col in zip(data.histories[:2], data.offsets[:2], colors):
         k = 2 * points_per_revolution(h) + 1
-        ax.plot(np.degrees(h.psi[-k:] - h.psi[-k]), np.degrees(off[-k:, 2] + h.x[-k:, 0, 2]), color=col,
-                lw=1.2, label=h.label)
-        ax.axhline(np.degrees(off[0, 2]), color=col, lw=0.6, ls=":")
+        az = np.degrees(h.psi[-k:] - h.psi[-k])
+        for i, name, ls in ((2, r"pitch $\theta$", "-"), (1, r"lag $\zeta$", "--")):
+            ax.plot(az, np.degrees(off[-k:, i] + h.x[-k:, 0, i]), ls, color=col, lw=1.2,
+                    label=f"{h.label}: {name}")
+            ax.axhline(np.degrees(off[0, i]), color=col, lw=0.6, ls=":")
     ax.set_xlabel(r"azimuth over the last two revolutions (deg)")
-    ax.set_ylabel(r"pitch angle $\theta$ (deg)")
-    ax.legend(fontsize=7)
+    ax.set_ylabel("hinge angle (deg; dotted: hover equilibrium)")
+    ax.legend(fontsize=6)
     ax = axes[2]
     h, ref = data.histories[2], data.reference[2]
     for m, ls in zip(range(h.norm.shape[1]), ("-", "--")):
