@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -118,7 +119,7 @@ def periodic_motion(
     n_points: int = 64,
     tol: float = 1e-10,
     max_iter: int = 30,
-    start=None,
+    start: Callable[[np.ndarray], np.ndarray] | None = None,
 ) -> PeriodicMotion:
     """The ``2 pi``-periodic solution of the blade equations at advance ratio ``mu``.
 
