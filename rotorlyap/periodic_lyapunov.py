@@ -81,6 +81,7 @@ from .floquet import (
     _System,
     floquet_multipliers,
 )
+from .reporting import format_small
 
 __all__ = ["INTERPOLATIONS", "PeriodicLyapunovSolution", "periodic_lyapunov"]
 
@@ -289,7 +290,7 @@ class PeriodicLyapunovSolution:
         return (
             f"PeriodicLyapunovSolution(n={self.n}, period={self.period:.6g}, "
             f"method={self.method!r}, interpolation={self.interpolation!r}, "
-            f"n_grid={self.n_grid}, relative_residual={self.relative_residual:.3g}, "
+            f"n_grid={self.n_grid}, relative residual {format_small(self.relative_residual)}, "
             f"eigenvalues of P in [{self.min_eigenvalue:.4g}, {self.max_eigenvalue:.4g}])"
         )
 

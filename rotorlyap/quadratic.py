@@ -55,6 +55,7 @@ import numpy as np
 from scipy.optimize import minimize
 
 from .periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
+from .reporting import format_small
 
 __all__ = [
     "DEFAULT_N_STEPS",
@@ -213,11 +214,12 @@ class QuadraticFunction:
         return float(self.solution.relative_residual)
 
     def summary(self) -> str:
-        """One line with the rounded diagnostics (stable text, no arrays)."""
+        """One line with the rounded diagnostics (stable text, no arrays; the residual as a
+        bound, :func:`rotorlyap.reporting.format_small`)."""
         lo, hi = self.eigenvalue_range
         return (f"{self.label}: spectral radius {self.spectral_radius:.4f}, growth rate "
                 f"{self.growth_rate:+.4f}/rev, eig(P_scaled) in [{lo:.4g}, {hi:.4g}], "
-                f"lambda0/A = {self.lambda0_ratio:.4f}, relative residual {self.relative_residual:.1e}")
+                f"lambda0/A = {self.lambda0_ratio:.4f}, relative residual {format_small(self.relative_residual)}")
 
     # ------------------------------------------------------------------ P
     def P_scaled(self, psi) -> np.ndarray:

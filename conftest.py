@@ -1,0 +1,112 @@
+"""Test-run hooks for the book's notebooks (nbval); ``book/_ext/notebook_execution.py``
+explains the design.
+
+1. **Image outputs are never compared**: every MIME type of
+   ``notebook_execution.IMAGE_MIMES`` joins nbval's skip list.
+2. **One execution feeds the build**: each notebook nbval executed completely (every code
+   cell ran, none raised) is stored, with its fresh outputs, in the book build's notebook
+   cache, so that ``jupyter-book build`` renders it without executing it again. Under
+   pytest-xdist each worker hands its notebooks to the controller, which stores them.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent / "book" / "_ext"))
+import notebook_execution  # noqa: E402
+
+_WORKER_KEY = "rotorlyap_executed_notebooks"
+
+
+def _nbval_cell_class():
+    try:
+        from nbval.plugin import IPyNbCell
+    except ImportError:  # nbval not installed: nothing to do
+        return None
+    return IPyNbCell
+
+
+class _Executions:
+    """Fresh outputs of the notebooks executed in this process, cell by cell."""
+
+    def __init__(self) -> None:
+        self.cells: dict[str, dict[int, list | None]] = {}
+        self.seconds: dict[str, float] = {}
+        self.notebooks: dict[str, object] = {}
+
+    def record(self, item, report) -> None:
+        path = str(item.path)
+        outputs = item.test_outputs
+        ok = outputs is not None and not item.parent.timed_out and not any(
+            o.get("output_type") == "error" for o in outputs)
+        self.cells.setdefault(path, {})[item.cell_num] = copy.deepcopy(outputs) if ok else None
+        self.seconds[path] = self.seconds.get(path, 0.0) + report.duration
+        self.notebooks[path] = item.parent.nb
+
+    def complete(self) -> list[tuple[str, dict, float]]:
+        """(path, executed notebook as a dict, seconds) for every completely executed notebook."""
+        done = []
+        for path, cells in self.cells.items():
+            nb = copy.deepcopy(self.notebooks[path])
+            code = [c for c in nb.cells if c.cell_type == "code"]
+            if len(cells) != len(code) or any(cells.get(k) is None for k in range(len(code))):
+                continue
+            for k, cell in enumerate(code):
+                cell.outputs = cells[k]
+                cell.execution_count = k + 1
+                for out in cell.outputs:
+                    if out.get("output_type") == "execute_result":
+                        out["execution_count"] = k + 1
+            done.append((path, nb, self.seconds[path]))
+        return done
+
+
+_EXECUTIONS = _Executions()
+_FROM_WORKERS: list[tuple[str, dict, float]] = []
+_STORED: list[str] = []
+
+
+def pytest_collection_modifyitems(session, config, items):
+    cell_class = _nbval_cell_class()
+    for item in items:
+        if cell_class is not None and isinstance(item, cell_class):
+            nbfile = item.parent
+            nbfile.skip_compare = tuple(dict.fromkeys(tuple(nbfile.skip_compare) + notebook_execution.IMAGE_MIMES))
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    outcome = yield
+    cell_class = _nbval_cell_class()
+    if call.when == "call" and cell_class is not None and isinstance(item, cell_class):
+        _EXECUTIONS.record(item, outcome.get_result())
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    """xdist controller: collect the notebooks a worker executed."""
+    import nbformat
+
+    for path, nb_json, seconds in json.loads(getattr(node, "workeroutput", {}).get(_WORKER_KEY, "[]")):
+        _FROM_WORKERS.append((path, nbformat.from_dict(nb_json), seconds))
+
+
+def pytest_sessionfinish(session, exitstatus):
+    done = _EXECUTIONS.complete()
+    workeroutput = getattr(session.config, "workeroutput", None)
+    if workeroutput is not None:  # an xdist worker: the controller stores
+        workeroutput[_WORKER_KEY] = json.dumps([(p, nb, s) for p, nb, s in done])
+        return
+    _STORED.extend(notebook_execution.store(done + _FROM_WORKERS))
+
+
+def pytest_terminal_summary(terminalreporter):
+    if _STORED:
+        terminalreporter.write_line(f"notebook outputs stored for the book build in "
+                                    f"{notebook_execution.CACHE_DIR}: {', '.join(sorted(_STORED))}")

@@ -1,0 +1,108 @@
+"""How the report prints a number: only the digits its computation determines.
+
+The committed outputs of the book are compared, as text, with the outputs of a fresh
+execution on the reader's machine (nbval). A digit that depends on the CPU, the BLAS kernel or
+the thread count (the last bits of a floating-point result) would make that comparison fail
+anywhere but on the machine that made the outputs. The rule (README, "What a committed output
+may print"):
+
+1. A result is rounded to the digits the computation determines: a quantity found by a
+   search, an iteration or an integration to a tolerance keeps fewer digits than the
+   tolerance allows (usually two to four significant digits).
+2. A residual, a tolerance or any other quantity at round-off level is never printed as its
+   value: it is printed as a bound below a stated threshold (``"< 1e-10"``) or as a
+   pass/fail. :func:`format_small` does this for one number, :func:`format_small_array` for
+   several; an error estimate (the change of a result with a tighter tolerance) is stated as
+   the power of ten it stays below, :func:`decade_above`.
+
+``tests/test_committed_outputs.py`` scans every committed output for numbers that break the
+second rule.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["ROUNDOFF_FLOOR", "decade_above", "format_small", "format_small_array"]
+
+ROUNDOFF_FLOOR = 1e-10
+"""Threshold below which a residual or relative error is round-off, not a result.
+
+Double precision carries about 16 significant digits; residuals of linear solves, of Newton's
+method at convergence and of identities that hold exactly in exact arithmetic land between
+1e-16 and 1e-11 (relative) and change with the machine. Everything this report computes to a
+tolerance is converged far above 1e-10, so a value below it says only "converged"."""
+
+
+def format_small(value: float, floor: float = ROUNDOFF_FLOOR) -> str:
+    """A small non-negative quantity (a residual, an error estimate) as printable text.
+
+    Parameters
+    ----------
+    value : float
+        The quantity, dimensionless or in the units the caller states.
+    floor : float
+        Threshold below which ``value`` is round-off: it is then printed as ``"< floor"``.
+
+    Returns
+    -------
+    str
+        ``"< 1e-10"`` below ``floor``; otherwise the value to one significant digit
+        (``"5e-08"``); ``"nan"`` if it is not finite (nothing was computed).
+
+    Raises
+    ------
+    ValueError
+        If ``value`` is negative or ``floor`` is not positive.
+
+    Examples
+    --------
+    >>> format_small(2.6e-15), format_small(4.6e-5)
+    ('< 1e-10', '5e-05')
+    """
+    if not floor > 0:
+        raise ValueError(f"floor must be positive, got {floor!r}")
+    value = float(value)
+    if not math.isfinite(value):
+        return "nan"
+    if value < 0:
+        raise ValueError(f"format_small prints a non-negative quantity (a residual, an error), got {value!r}")
+    if value < floor:
+        return f"< {floor:.0e}"
+    return f"{value:.0e}"
+
+
+def format_small_array(values, floor: float = ROUNDOFF_FLOOR) -> str:
+    """Several small non-negative quantities, each as :func:`format_small` prints it.
+
+    Returns
+    -------
+    str
+        The items in brackets, separated by commas: ``"[< 1e-10, 5e-08, nan]"``.
+    """
+    return "[" + ", ".join(format_small(v, floor) for v in np.ravel(np.asarray(values, dtype=float))) + "]"
+
+
+def decade_above(value: float) -> float:
+    """The smallest power of ten above a positive error estimate: the bound the report states.
+
+    An error estimate, such as the change of a result when a tolerance is tightened, is known
+    to its order of magnitude, not to its digits: the report says "less than 1e-03", not
+    "3e-04".
+
+    Raises
+    ------
+    ValueError
+        If ``value`` is not a positive finite number.
+
+    Examples
+    --------
+    >>> decade_above(3e-4), decade_above(0.02)
+    (0.001, 0.1)
+    """
+    value = float(value)
+    if not (math.isfinite(value) and value > 0):
+        raise ValueError(f"decade_above needs a positive finite error estimate, got {value!r}")
+    return float(10.0 ** math.floor(math.log10(value) + 1.0))

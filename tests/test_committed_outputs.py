@@ -1,0 +1,119 @@
+"""The committed notebook outputs follow the rule of what may be printed (README, "What a
+committed output may print"; :mod:`rotorlyap.reporting`).
+
+nbval compares these outputs as text with a fresh execution on the reader's machine. A digit
+that only one machine reproduces (round-off, an unrounded float, a memory address) makes that
+comparison fail elsewhere, and an image compared byte by byte fails for the same reason; a
+notebook committed without outputs, out of order or with an error compares nothing. These
+tests read the committed files only; they execute nothing.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+NOTEBOOKS = sorted((ROOT / "book").glob("*.ipynb"))
+sys.path.insert(0, str(ROOT / "book" / "_ext"))
+from notebook_execution import IMAGE_MIMES  # noqa: E402
+
+from rotorlyap.reporting import ROUNDOFF_FLOOR, format_small, format_small_array  # noqa: E402
+
+TEXT_MIMES = ("text/plain", "text/markdown", "text/latex", "text/html",
+              "application/papermill.record/text/plain", "application/papermill.record/text/markdown")
+"""Output MIME types compared as text."""
+
+_NUMBER = re.compile(r"(?<![\w.])[-+]?(\d+\.?\d*|\.\d+)(?:[eE]([-+]?\d+))?(?![\w.])")
+_BOUND = re.compile(r"(<|<=|≤|below|under|less than)\s*$")
+
+
+def _code_cells(path: Path) -> list[dict]:
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    return [c for c in nb["cells"] if c["cell_type"] == "code"]
+
+
+def _texts(cell: dict):
+    """(label, text) of every text output of a code cell."""
+    for out in cell.get("outputs", []):
+        if out.get("output_type") == "stream":
+            yield out.get("name", "stream"), "".join(out.get("text", ""))
+        for mime, value in out.get("data", {}).items():
+            if mime in TEXT_MIMES:
+                yield mime, "".join(value) if isinstance(value, list) else str(value)
+
+
+def roundoff_numbers(text: str) -> list[str]:
+    """Numbers in ``text`` smaller in magnitude than ``ROUNDOFF_FLOOR`` (but not zero) that are
+    not stated as a bound (preceded by ``<``, ``below``, ...)."""
+    found = []
+    for m in _NUMBER.finditer(text):
+        value = float(m.group(0))
+        if value != 0.0 and abs(value) < ROUNDOFF_FLOOR and not _BOUND.search(text[max(0, m.start() - 12):m.start()]):
+            found.append(m.group(0))
+    return found
+
+
+def unrounded_numbers(text: str, max_digits: int = 9) -> list[str]:
+    """Decimal numbers with more than ``max_digits`` significant digits (unrounded floats)."""
+    found = []
+    for m in _NUMBER.finditer(text):
+        mantissa = m.group(1)
+        if "." not in mantissa:
+            continue
+        digits = mantissa.replace(".", "").lstrip("0")
+        if len(digits) > max_digits:
+            found.append(m.group(0))
+    return found
+
+
+def test_the_scanners_catch_what_the_rule_forbids_and_pass_what_it_allows():
+    # raw round-off: the residuals that broke the comparison on another machine (issue 10)
+    assert roundoff_numbers("relative residual 2.6e-15") == ["2.6e-15"]
+    assert roundoff_numbers("residual: [6e-13 5e-08]") == ["6e-13"]
+    assert roundoff_numbers("tiny 0.00000000000042") == ["0.00000000000042"]
+    # bounds and ordinary results pass
+    assert roundoff_numbers(f"relative residual {format_small(2.6e-15)}") == []
+    assert roundoff_numbers(format_small_array([6e-13, 5e-8, float("nan")])) == []
+    assert roundoff_numbers("growth -0.1446/rev, A = 1, mu = 1e-07, 0.0") == []
+    # unrounded floats
+    assert unrounded_numbers("x = 0.30000000000000004") == ["0.30000000000000004"]
+    assert unrounded_numbers("lambda0 in [0.2623, 0.2959], 1234567.5") == []
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_committed_outputs_print_no_roundoff_unrounded_float_or_address(path):
+    problems = []
+    for k, cell in enumerate(_code_cells(path)):
+        for label, text in _texts(cell):
+            for kind, found in (("raw round-off-level number", roundoff_numbers(text)),
+                                ("unrounded float", unrounded_numbers(text)),
+                                ("memory address", re.findall(r"\bat 0x[0-9a-fA-F]{6,}", text))):
+                if found:
+                    problems.append(f"cell {k} ({label}): {kind} {found[:3]}")
+    assert not problems, (f"{path.name} prints digits that change from machine to machine; print a "
+                          "bound (rotorlyap.reporting.format_small) or round:\n  " + "\n  ".join(problems))
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_committed_notebook_was_executed_once_top_to_bottom_without_errors(path):
+    cells = [c for c in _code_cells(path) if "".join(c["source"]).strip()]
+    counts = [c.get("execution_count") for c in cells]
+    assert counts == list(range(1, len(cells) + 1)), (
+        f"{path.name}: execution counts {counts}: execute it from a fresh kernel, top to bottom "
+        "(python tools/run_notebooks.py), and commit it with its outputs")
+    errors = [k for k, c in enumerate(cells) if any(o.get("output_type") == "error" for o in c.get("outputs", []))]
+    assert not errors, f"{path.name}: cells {errors} stored an error"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_every_output_is_compared_as_text_or_is_an_image_nbval_skips(path):
+    unknown = {mime for cell in _code_cells(path) for out in cell.get("outputs", [])
+               for mime in out.get("data", {}) if mime not in TEXT_MIMES + IMAGE_MIMES}
+    assert not unknown, (f"{path.name}: output MIME types {sorted(unknown)} are neither compared as text "
+                         "nor skipped as images: add them to TEXT_MIMES here or to IMAGE_MIMES in "
+                         "book/_ext/notebook_execution.py")
