@@ -237,7 +237,7 @@ def periodic_motion(
         Z, cyc, blade, r, err = Z_new, cyc_new, blade_new, r_new, err_new
     if not err < tol:
         raise PeriodicMotionError(
-            f"no periodic solution found at mu = {mu:.4g}: collocation residual {err:.1e} "
+            f"no periodic solution found at mu = {mu:.4g}: collocation residual {err:.0e} "
             f"after {max_iter} Newton iterations (converged means < {tol:.1g})"
         )
     coeffs = np.fft.rfft(Z, axis=0) / n

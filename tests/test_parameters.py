@@ -220,7 +220,7 @@ BAD_VALUES = [
 
 
 @pytest.mark.parametrize("field, value, exc, match", BAD_VALUES,
-                         ids=[f"{f}={v!r}" for f, v, _, _ in BAD_VALUES])
+                         ids=[f"{f}={'callable' if callable(v) else repr(v)}-{k}" for k, (f, v, _, _) in enumerate(BAD_VALUES)])
 def test_invalid_parameter_is_rejected_naming_field_value_and_allowed_range(field, value, exc, match):
     with np.errstate(all="ignore"):
         with pytest.raises(exc, match=match):
