@@ -70,6 +70,7 @@ class _Executions:
 _EXECUTIONS = _Executions()
 _FROM_WORKERS: list[tuple[str, dict, float]] = []
 _STORED: list[str] = []
+_TREE = notebook_execution.fingerprint()  # the package the notebooks of this run execute
 
 
 def pytest_collection_modifyitems(session, config, items):
@@ -103,7 +104,7 @@ def pytest_sessionfinish(session, exitstatus):
     if workeroutput is not None:  # an xdist worker: the controller stores
         workeroutput[_WORKER_KEY] = json.dumps([(p, nb, s) for p, nb, s in done])
         return
-    _STORED.extend(notebook_execution.store(done + _FROM_WORKERS))
+    _STORED.extend(notebook_execution.store(done + _FROM_WORKERS, executed_with=_TREE))
 
 
 def pytest_terminal_summary(terminalreporter):

@@ -85,3 +85,16 @@ def test_glued_figures_of_every_kind_are_skipped_by_the_comparison():
     for mime in ("image/png", "application/papermill.record/image/png", "image/svg+xml"):
         assert mime in ne.IMAGE_MIMES
     assert not any(m.startswith("text/") or "/text/" in m for m in ne.IMAGE_MIMES)
+
+
+def test_outputs_of_a_run_during_which_the_package_changed_are_emptied_by_the_next_build(project):
+    from jupyter_cache import get_cache
+
+    cache_dir = project / "_build" / ".jupyter_cache"
+    at_start = ne.fingerprint(project)
+    (project / "rotorlyap" / "__init__.py").write_text("A = 3\n")  # edited while the tests ran
+    ne.store([(project / "ch.ipynb", _executed_notebook("print(1)", "1\n"), 1.0)], cache_dir, project,
+             executed_with=at_start)
+    assert len(get_cache(str(cache_dir)).list_cache_records()) == 1
+    assert ne.refresh(cache_dir, project) is True  # what the build does first
+    assert get_cache(str(cache_dir)).list_cache_records() == []

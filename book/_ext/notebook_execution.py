@@ -62,9 +62,11 @@ def fingerprint(root: Path = ROOT) -> str:
     return digest.hexdigest()
 
 
-def refresh(cache_dir: Path = CACHE_DIR, root: Path = ROOT, *, force_clear: bool = False) -> bool:
-    """Empty the cache unless its stamp matches the working tree; stamp it. True if emptied."""
-    current = fingerprint(root)
+def refresh(cache_dir: Path = CACHE_DIR, root: Path = ROOT, *, force_clear: bool = False,
+            current: str | None = None) -> bool:
+    """Empty the cache unless its stamp matches ``current`` (default: the working tree's
+    :func:`fingerprint`); stamp it with ``current``. True if it was emptied."""
+    current = fingerprint(root) if current is None else current
     stamp = cache_dir / STAMP_NAME
     stale = force_clear or not (stamp.is_file() and stamp.read_text().strip() == current)
     if stale and cache_dir.exists():
@@ -76,7 +78,8 @@ def refresh(cache_dir: Path = CACHE_DIR, root: Path = ROOT, *, force_clear: bool
     return stale
 
 
-def store(notebooks, cache_dir: Path = CACHE_DIR, root: Path = ROOT) -> list[str]:
+def store(notebooks, cache_dir: Path = CACHE_DIR, root: Path = ROOT, *,
+          executed_with: str | None = None) -> list[str]:
     """Store executed notebooks in the cache, after :func:`refresh`; return their names.
 
     Parameters
@@ -84,6 +87,10 @@ def store(notebooks, cache_dir: Path = CACHE_DIR, root: Path = ROOT) -> list[str
     notebooks : iterable of (path, notebook, seconds)
         The notebook's source path, the notebook (``nbformat.NotebookNode``) with the fresh
         outputs of one top-to-bottom execution, and the execution time in seconds.
+    executed_with : str, optional
+        The :func:`fingerprint` of the tree the notebooks were executed with, taken when the
+        execution started (default: the tree now). Should the package change during the
+        run, the cache is stamped with the old tree and the next build empties it.
     """
     from jupyter_cache import get_cache
     from jupyter_cache.base import CacheBundleIn
@@ -91,7 +98,7 @@ def store(notebooks, cache_dir: Path = CACHE_DIR, root: Path = ROOT) -> list[str
     notebooks = list(notebooks)
     if not notebooks:
         return []
-    refresh(cache_dir, root)
+    refresh(cache_dir, root, current=executed_with)
     cache = get_cache(str(cache_dir))
     names = []
     for path, nb, seconds in notebooks:
