@@ -38,15 +38,16 @@ def _timed_in_fresh_interpreter(setup: str, stmt: str) -> float:
 
 
 def main(n: int = 100_000) -> None:
-    from rotorlyap.blade import Blade
-    from rotorlyap.parameters import BladeParameters
+    from rotorlyap.analysis.functions import energy_function
+    from rotorlyap.model.blade import Blade
+    from rotorlyap.model.parameters import BladeParameters
 
     params = BladeParameters.table_i("forward")
     t0 = time.perf_counter()
     blade = Blade(params, mu=0.15)
     t_build = time.perf_counter() - t0
     xi = blade.equilibrium()
-    E = blade.energy_function(xi)
+    E = energy_function(blade, xi)
     rng = np.random.default_rng(0)
     x = rng.normal(scale=0.05, size=(n, 6))
     psi = rng.uniform(0.0, 2.0 * np.pi, n)
@@ -63,11 +64,11 @@ def main(n: int = 100_000) -> None:
     print(f"W   : {t:.3f} s  -> {n / t:,.0f} states/s")
 
     t_load = _timed_in_fresh_interpreter("import numpy, scipy.optimize, scipy.integrate",
-                                         "import rotorlyap")
+                                         "import rotorlyap.model.blade")
     t_derive = _timed_in_fresh_interpreter(
-        "import numpy, rotorlyap", "from rotorlyap import derivation; derivation.generate_source()")
-    print(f"load cached code: {t_load:.3f} s (fresh interpreter: `import rotorlyap`, which loads "
-          "the generated model, after numpy and scipy)")
+        "import numpy, rotorlyap", "from rotorlyap.model import derivation; derivation.generate_source()")
+    print(f"load cached code: {t_load:.3f} s (fresh interpreter: `import rotorlyap.model.blade`, which "
+          "loads the generated model, after numpy and scipy)")
     print(f"derive + generate: {t_derive:.3f} s (fresh interpreter, sympy import included): "
           f"{t_derive / t_load:,.0f} x the load time")
 

@@ -23,7 +23,8 @@ TARGET_S = 300.0
 def main() -> int:
     import numpy as np
 
-    from rotorlyap import sampling, trim
+    from rotorlyap.methods import sampling
+    from rotorlyap.model import trim
     from rotorlyap.figures import paper
 
     trim.hover_trim.cache_clear()

@@ -3,26 +3,60 @@
 A re-implementation of J. Narkiewicz & W. Lucjanek, "Investigation of helicopter rotor blade
 motion stability by direct Liapunov method", 15th European Rotorcraft Forum, 1989.
 
-Public names: the general engine (:func:`technical_stability`), simulation helpers, the
-blade model (:class:`BladeParameters`, :class:`Blade`, :func:`hover_trim`), the blade in the
-engine (:func:`blade_stability`) and Floquet theory (:func:`floquet_multipliers`).
+The package has three layers, and data flows one way through them:
+
+* :mod:`rotorlyap.methods`: the general method for any periodic system (the six-step
+  algorithm, sphere searches, simulation, Floquet theory, the periodic Lyapunov equation);
+* :mod:`rotorlyap.model`: parameters -> the equations of the blade -> its steady motions;
+* :mod:`rotorlyap.analysis`: the blade in the methods (Liapunov functions, technical
+  stability, Floquet analysis of the blade);
+
+then :mod:`rotorlyap.figures` (one module per chapter) and the command line
+(:mod:`rotorlyap.cli`). :mod:`rotorlyap.conventions` holds the names and defaults they share,
+:mod:`rotorlyap.errors` the errors, :mod:`rotorlyap.reporting` how a number is printed.
+
+The names below are the ones a chapter needs; each is imported from its module on first use,
+so ``import rotorlyap.methods`` loads nothing of the model.
 """
 
-from .airfoil import Airfoil, LinearAirfoil, NACA23012
-from .blade import Blade, EnergyFunction
-from .floquet import FloquetResult, floquet_multipliers
-from .lyapunov import TechnicalStabilityResult, orbital_derivative, technical_stability
-from .parameters import BladeParameters
-from .simulation import SimulationResult, scaled_norm, simulate
-from .stability import blade_stability
-from .trim import HoverTrim, hover_trim
+from __future__ import annotations
 
-__all__ = [
-    "Airfoil", "LinearAirfoil", "NACA23012",
-    "Blade", "EnergyFunction",
-    "FloquetResult", "floquet_multipliers", "blade_stability",
-    "TechnicalStabilityResult", "orbital_derivative", "technical_stability",
-    "BladeParameters",
-    "SimulationResult", "scaled_norm", "simulate",
-    "HoverTrim", "hover_trim",
-]
+import importlib
+
+_PUBLIC = {
+    # the general method
+    "technical_stability": "methods.lyapunov", "TechnicalStabilityResult": "methods.lyapunov",
+    "simulate": "methods.simulation", "scaled_norm": "methods.simulation",
+    "floquet_multipliers": "methods.floquet", "periodic_lyapunov": "methods.periodic_lyapunov",
+    # the model
+    "BladeParameters": "model.parameters", "Blade": "model.blade", "hover_trim": "model.trim",
+    "SteadyMotion": "model.steady", "periodic_motion": "model.steady",
+    "derived_quantities": "model.modes",
+    # the blade in the methods
+    "blade_stability": "analysis.stability", "energy_function": "analysis.functions",
+    "quadratic_function": "analysis.functions",
+    "optimised_quadratic_function": "analysis.functions", "blade_floquet": "analysis.floquet",
+    # shared conventions, errors and printing
+    "DEFAULT_A": "conventions", "DEFAULT_SCALES": "conventions",
+    "PAPER_TEST_DISTURBANCES": "conventions", "STATE_NAMES": "conventions",
+    "ConvergenceError": "errors", "NotAsymptoticallyStableError": "errors",
+    "format_small": "reporting", "decade_above": "reporting",
+}
+
+_SUBPACKAGES = ("analysis", "cli", "conventions", "errors", "figures", "methods", "model", "reporting")
+
+__all__ = sorted(_PUBLIC)
+
+
+def __getattr__(name: str):
+    if name in _PUBLIC:
+        value = getattr(importlib.import_module(f".{_PUBLIC[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    if name in _SUBPACKAGES:
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module 'rotorlyap' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_PUBLIC) | set(_SUBPACKAGES))

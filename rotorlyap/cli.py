@@ -120,21 +120,17 @@ def _result_json(res, params, mu: float, args) -> dict:
 
 
 def _analyse(args) -> int:
-    from .blade import Blade
-    from .parameters import BladeParameters
-    from .stability import PAPER_TEST_DISTURBANCES, blade_stability
+    from .analysis.functions import quadratic_function
+    from .analysis.stability import blade_stability
+    from .conventions import PAPER_TEST_DISTURBANCES
+    from .model.blade import Blade
+    from .model.parameters import BladeParameters
+    from .model.steady import periodic_motion
 
     params = BladeParameters.table_i(cg=args.cg)
     params = Blade(params, 0.0).params  # trimmed collective, kept at every mu
-    steady = None
-    if args.steady == "periodic":
-        from .periodic_motion import periodic_motion
-
-        steady = periodic_motion(params, args.mu).steady
-    lyapunov = None
-    if args.lyapunov == "quadratic":
-        def lyapunov(blade, xi, dxi):
-            return blade.quadratic_function(xi, dxi=dxi)
+    steady = periodic_motion(params, args.mu) if args.steady == "periodic" else None
+    lyapunov = quadratic_function if args.lyapunov == "quadratic" else None
     scales = None if args.scales is None else np.radians(args.scales)
     print(f"analysing: cg={args.cg}, mu={args.mu:g}, {args.reading} reading ...", file=sys.stderr, flush=True)
     res = blade_stability(

@@ -1,4 +1,4 @@
-"""Tests of rotorlyap.airfoil: cited NACA 23012 facts, full-range behaviour, linear model."""
+"""Tests of rotorlyap.model.airfoil: cited NACA 23012 facts, full-range behaviour, linear model."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from rotorlyap.airfoil import NACA23012, Airfoil, LinearAirfoil, wrap_angle
+from rotorlyap.model.airfoil import NACA23012, Airfoil, LinearAirfoil, wrap_angle
 
 DEG = math.pi / 180.0
 MODELS = [NACA23012, dataclasses.replace(NACA23012, table_size=0)]
@@ -169,7 +169,7 @@ def test_wrap_angle_range():
 
 
 def test_every_naca23012_number_has_a_source():
-    from rotorlyap.airfoil import NACA23012_SOURCES
+    from rotorlyap.model.airfoil import NACA23012_SOURCES
 
     cited = {f.name for f in dataclasses.fields(Airfoil) if f.init and f.name not in ("name", "table_size")}
     assert set(NACA23012_SOURCES) == cited

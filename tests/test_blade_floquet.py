@@ -1,11 +1,11 @@
-"""Floquet analysis of the blade (rotorlyap.blade_floquet)."""
+"""Floquet analysis of the blade (rotorlyap.analysis.floquet)."""
 
 import numpy as np
 import pytest
 
 from rotorlyap import Blade, BladeParameters
-from rotorlyap.blade_floquet import blade_floquet, floquet_sweep, tabulate_motion
-from rotorlyap.periodic_motion import periodic_motion
+from rotorlyap.analysis.floquet import blade_floquet, floquet_sweep
+from rotorlyap.model.steady import periodic_motion, tabulate_motion
 
 
 @pytest.fixture(scope="module")
@@ -72,11 +72,11 @@ def test_missing_periodic_motion_is_recorded_not_raised():
 def test_tabulated_motion_is_consistent(forward):
     """The tabulated motion is within 1e-9 of the series and dxi is its exact derivative."""
     pm = periodic_motion(forward, 0.1)
-    tab = tabulate_motion(pm.xi, pm.dxi, 2048)
+    tab = tabulate_motion(pm, 2048)
     psi = np.linspace(0.01, 6.2, 37)
     assert tab.max_error < 1e-9
     np.testing.assert_allclose(tab.xi(psi), pm.xi(psi), atol=1e-9)
     h = 1e-6
     np.testing.assert_allclose((tab.xi(psi + h) - tab.xi(psi - h)) / (2 * h), tab.dxi(psi), atol=1e-7)
     with pytest.raises(ValueError):
-        tabulate_motion(pm.xi, pm.dxi, 4.5)
+        tabulate_motion(pm, 4.5)

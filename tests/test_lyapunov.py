@@ -8,8 +8,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from rotorlyap import technical_stability
-from rotorlyap.examples import mathieu_duffing
-from rotorlyap.lyapunov import orbital_derivative
+from rotorlyap.methods.examples import mathieu_duffing
+from rotorlyap.methods.lyapunov import orbital_derivative
 
 REL = 0.02  # the tolerance for hand-derived answers
 

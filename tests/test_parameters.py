@@ -1,4 +1,4 @@
-"""Tests of rotorlyap.parameters: Table I, the omitted data and validation."""
+"""Tests of rotorlyap.model.parameters: Table I, the omitted data and validation."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from rotorlyap.airfoil import NACA23012, LinearAirfoil
-from rotorlyap.parameters import (
+from rotorlyap.model.airfoil import NACA23012, LinearAirfoil
+from rotorlyap.model.parameters import (
     CG_POSITIONS,
     FIELD_INFO,
     TABLE_I_AIRFOIL,

@@ -1,4 +1,4 @@
-"""Tests of ``rotorlyap.periodic_lyapunov`` against facts that hold for the exact solution.
+"""Tests of ``rotorlyap.methods.periodic_lyapunov`` against facts that hold for the exact solution.
 
 Each test's docstring states the fact it checks. The periodic system used is the damped
 Mathieu equation ``y'' + c y' + (a - 2 q cos 2t) y = 0`` (period pi) at (a, q) = (2.5, 0.5),
@@ -11,7 +11,7 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_lyapunov
 
-from rotorlyap.periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
+from rotorlyap.methods.periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
 
 A_CONST = np.array([[0.0, 1.0, 0.0], [-4.0, -0.4, 0.5], [0.3, 0.0, -1.0]])
 Q3 = np.diag([1.0, 2.0, 0.5])

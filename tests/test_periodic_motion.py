@@ -5,7 +5,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from rotorlyap import Blade, BladeParameters
-from rotorlyap.periodic_motion import PeriodicMotionError, periodic_motion
+from rotorlyap.errors import PeriodicMotionError
+from rotorlyap.model.steady import periodic_motion
 
 
 @pytest.fixture(scope="module")

@@ -1,16 +1,17 @@
-"""The quadratic Liapunov function of the blade (rotorlyap.quadratic)."""
+"""The quadratic Liapunov function of the blade (rotorlyap.analysis.functions)."""
 
 import numpy as np
 import pytest
 
 from rotorlyap import Blade, BladeParameters
-from rotorlyap.blade_floquet import tabulate_motion
-from rotorlyap.periodic_motion import periodic_motion
-from rotorlyap.quadratic import (
+from rotorlyap.model.steady import periodic_motion, tabulate_motion
+from rotorlyap.analysis.functions import (
     certified_radius_estimate, optimised_quadratic_function, quadratic_function,
 )
-from rotorlyap.sampling import unit_sphere_points
-from rotorlyap.stability import DEFAULT_SCALES, blade_stability
+from rotorlyap.errors import NotAsymptoticallyStableError
+from rotorlyap.methods.sampling import unit_sphere_points
+from rotorlyap.analysis.stability import blade_stability
+from rotorlyap.conventions import DEFAULT_SCALES
 
 A = DEFAULT_SCALES
 
@@ -21,7 +22,7 @@ def hover():
     p = BladeParameters.table_i("forward")
     b = Blade(p, 0.0)
     q = quadratic_function(b)
-    res = blade_stability(p, 0.0, lyapunov=lambda bl, xi, dxi: quadratic_function(bl, xi, None, dxi),
+    res = blade_stability(p, 0.0, lyapunov=quadratic_function,
                           n_psi=4, n_sphere=128)
     return p, b, q, res
 
@@ -31,9 +32,9 @@ def forward_flight():
     """Forward C.G. at mu = 0.15 about its periodic motion (256 collocation points, tabulated)."""
     p = BladeParameters.table_i("forward")
     pm = periodic_motion(p, 0.15, n_points=256)
-    tab = tabulate_motion(pm.xi, pm.dxi)
+    tab = tabulate_motion(pm)
     b = Blade(p, 0.15)
-    q = quadratic_function(b, tab.xi, None, tab.dxi)
+    q = quadratic_function(b, tab)
     return p, b, tab, q
 
 
@@ -99,7 +100,7 @@ def test_periodic_P_solves_the_lyapunov_equation(forward_flight):
 def test_certificate_about_the_periodic_motion_in_forward_flight(forward_flight):
     """The engine certifies the forward-flight blade about its periodic motion (strict)."""
     p, _, tab, q = forward_flight
-    res = blade_stability(p, 0.15, lyapunov=lambda bl, xi, dxi: q, steady=tab.steady, n_psi=6, n_sphere=128)
+    res = blade_stability(p, 0.15, lyapunov=lambda bl, steady: q, steady=tab, n_psi=6, n_sphere=128)
     assert res.certified and res.stable.all() and res.lambda0.min() > 0.01
 
 
@@ -122,16 +123,16 @@ def test_unstable_linearisation_raises_a_clear_error():
     """Backward C.G. without aerodynamic pitch damping (hover flutter): no quadratic function
     exists; the error says why."""
     b = Blade(BladeParameters.table_i("backward", cm_pitch_rate=0.0), 0.0)
-    with pytest.raises(ValueError, match=r"not asymptotically stable.*spectral radius.*2\.0"):
+    with pytest.raises(NotAsymptoticallyStableError, match=r"not asymptotically stable.*spectral radius.*2\.0") as info:
         quadratic_function(b)
-    with pytest.raises(ValueError, match="not asymptotically stable"):
-        b.quadratic_function()
+    assert info.value.spectral_radius > 2.0 and info.value.growth_rate > 0  # the numbers travel with it
+    assert isinstance(info.value, ValueError)
 
 
-def test_blade_method_delegates_and_checks_Q(hover):
-    """Blade.quadratic_function is quadratic_function; a bad Q is refused."""
+def test_default_steady_motion_is_the_hover_equilibrium_and_a_bad_Q_is_refused(hover):
+    """quadratic_function(b) is the function about the hover equilibrium; a bad Q is refused."""
     _, b, q, _ = hover
-    np.testing.assert_allclose(b.quadratic_function().P(0.0), q.P(0.0))
+    np.testing.assert_allclose(quadratic_function(b, b.equilibrium()).P(0.0), q.P(0.0))
     with pytest.raises(ValueError, match="positive definite"):
         quadratic_function(b, Q=-np.ones(6))
     with pytest.raises(ValueError, match="scales"):

@@ -1,14 +1,14 @@
-"""Time-domain validation of certificates (rotorlyap.validation)."""
+"""Time-domain validation of certificates (rotorlyap.methods.validation)."""
 
 import numpy as np
 import pytest
 
 from rotorlyap import Blade, BladeParameters
-from rotorlyap.blade_floquet import tabulate_motion
-from rotorlyap.periodic_motion import periodic_motion
-from rotorlyap.quadratic import quadratic_function
-from rotorlyap.stability import DEFAULT_SCALES, blade_stability, disturbed_system
-from rotorlyap.validation import (
+from rotorlyap.model.steady import disturbed_rhs, periodic_motion, tabulate_motion
+from rotorlyap.analysis.functions import quadratic_function
+from rotorlyap.analysis.stability import blade_stability
+from rotorlyap.conventions import DEFAULT_SCALES
+from rotorlyap.methods.validation import (
     classify_motion, confusion_matrix, simulate_within, start_directions, validate,
 )
 
@@ -19,9 +19,9 @@ A = DEFAULT_SCALES
 def hover_case():
     p = BladeParameters.table_i("forward")
     b = Blade(p, 0.0)
-    res = blade_stability(p, 0.0, lyapunov=lambda bl, xi, dxi: quadratic_function(bl, xi, None, dxi),
+    res = blade_stability(p, 0.0, lyapunov=quadratic_function,
                           n_psi=4, n_sphere=128)
-    return disturbed_system(b, b.equilibrium()), res
+    return disturbed_rhs(b, b.equilibrium()), res
 
 
 def test_confusion_matrix_counts_add_up():
@@ -62,11 +62,11 @@ def test_quadratic_function_certifies_every_table_i_hover_and_simulation_confirm
     16 seeded directions, two azimuths) stay within A1 for 8 revolutions."""
     p = BladeParameters.table_i(cg)
     b = Blade(p, 0.0)
-    res = blade_stability(p, 0.0, lyapunov=lambda bl, xi, dxi: quadratic_function(bl, xi, None, dxi),
+    res = blade_stability(p, 0.0, lyapunov=quadratic_function,
                           n_psi=4, n_sphere=128)
     assert res.reading == "strict" and res.certified and res.stable.all()
     assert res.A > 0 and res.lambda0.min() > 0
-    f = disturbed_system(b, b.equilibrium())
+    f = disturbed_rhs(b, b.equilibrium())
     for j in (0, 1):
         x0 = 0.99 * res.lambda0[j] * start_directions(16) * A
         run = simulate_within(f, x0, float(res.psi[j]), 8.0, res.A, scales=A)
@@ -78,11 +78,11 @@ def test_soundness_in_forward_flight_about_the_periodic_motion():
     the certified bound for 5 revolutions."""
     p = BladeParameters.table_i("forward")
     pm = periodic_motion(p, 0.15, n_points=256)
-    tab = tabulate_motion(pm.xi, pm.dxi)
-    res = blade_stability(p, 0.15, lyapunov=lambda bl, xi, dxi: quadratic_function(bl, xi, None, dxi),
-                          steady=tab.steady, n_psi=4, n_sphere=128)
+    tab = tabulate_motion(pm)
+    res = blade_stability(p, 0.15, lyapunov=quadratic_function,
+                          steady=tab, n_psi=4, n_sphere=128)
     assert res.certified
-    f = disturbed_system(Blade(p, 0.15), *tab.steady)
+    f = disturbed_rhs(Blade(p, 0.15), tab)
     for j in (0, 2):
         x0 = 0.99 * res.lambda0[j] * start_directions(8, seed=2) * A
         run = simulate_within(f, x0, float(res.psi[j]), 5.0, res.A, scales=A)
@@ -110,7 +110,7 @@ def test_classify_motion():
 def test_last_revolution_reproduces_a_periodic_motion():
     """x' = (-x2, x1): the last revolution of the circle x = (cos psi, sin psi), interpolated,
     is the circle at any azimuth (modulo 2 pi), plus the offset."""
-    from rotorlyap.validation import last_revolution, long_run
+    from rotorlyap.methods.validation import last_revolution, long_run
 
     f = lambda psi, x: np.stack([-x[..., 1], x[..., 0]], axis=-1)  # noqa: E731
     h = long_run(f, [[1.0, 0.0]], 0.0, 3, A=2.0, points_per_period=64, rtol=1e-10, atol=1e-12)

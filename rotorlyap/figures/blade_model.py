@@ -26,10 +26,10 @@ from typing import Any, Sequence
 import numpy as np
 from matplotlib.patches import Circle, FancyArrowPatch, Polygon, Rectangle
 
-from ..airfoil import LinearAirfoil
-from ..blade import Blade
-from ..derived import HINGES, hover_modes
-from ..parameters import CG_POSITIONS, BladeParameters, parameter_table
+from ..conventions import HINGES
+from ..model.blade import Blade
+from ..model.modes import hover_modes
+from ..model.parameters import CG_POSITIONS, BladeParameters, parameter_table
 
 __all__ = [
     "SchematicData", "schematic_data",

@@ -20,14 +20,13 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..blade import Blade
-from ..parameters import CG_POSITIONS, BladeParameters
-from ..sampling import sphere_extremum, unit_sphere_points
-from ..stability import (
-    DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES, STATE_NAMES, blade_stability,
-    energy_rate_terms,
-)
-from ..trim import hover_trim
+from ..analysis.functions import energy_function, energy_rate_terms
+from ..analysis.stability import blade_stability
+from ..conventions import DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
+from ..methods.sampling import sphere_extremum, unit_sphere_points
+from ..model.blade import Blade
+from ..model.parameters import CG_POSITIONS, BladeParameters
+from ..model.trim import hover_trim
 
 __all__ = [
     "READING_LABELS", "CASES", "MU_GRID", "MU_GRID_STRICT", "STATE_LABELS",
@@ -105,7 +104,7 @@ def balanced_scales(params: BladeParameters, scales=None) -> np.ndarray:
     """
     a = np.array(DEFAULT_SCALES if scales is None else scales, dtype=float)
     blade = Blade(params, 0.0)
-    fun = blade.energy_function()
+    fun = energy_function(blade)
     eye = np.eye(6)
     w = 0.5 * (fun.W(0.0, eye * a) + fun.W(0.0, -eye * a))
     ref = float(np.exp(np.mean(np.log(w))))
@@ -252,7 +251,7 @@ class HoverRateData:
     strict_positive_fraction : numpy.ndarray
         Fraction of ``n_fraction`` quasi-random points of the sphere with ``W' > 0``, (k,).
     terms_damping, terms_aero : numpy.ndarray
-        :func:`rotorlyap.stability.energy_rate_terms` at the argmax: work rates of the
+        :func:`rotorlyap.analysis.stability.energy_rate_terms` at the argmax: work rates of the
         dampers and of the aerodynamic load change on each hinge, (k, 3), J/rad.
     practical_dW : numpy.ndarray
         ``W'`` at ``A`` times each test disturbance, (k, n_test), J/rad.
@@ -321,7 +320,7 @@ def hover_rate_data(
     The hover problem has no explicit azimuth dependence (constant steady motion, no cyclic,
     no inflow variation), so the spheres are searched at ``psi = 0``. The strict search
     samples the structured directions and ``n_sphere`` Sobol' directions and refines the
-    ``n_refine`` best by local ascent (:func:`rotorlyap.sampling.sphere_extremum`).
+    ``n_refine`` best by local ascent (:func:`rotorlyap.methods.sampling.sphere_extremum`).
     """
     a = np.array(DEFAULT_SCALES if scales is None else scales, dtype=float)
     tests = np.asarray(test_disturbances, dtype=float)
@@ -335,7 +334,7 @@ def hover_rate_data(
         p = case_params(float(cg))
         blade = Blade(p, 0.0)
         xi = blade.equilibrium()
-        fun = blade.energy_function(xi)
+        fun = energy_function(blade, xi)
         dw = _Count(fun.dW)
         ext = sphere_extremum(dw, psi0, A, a, dirs, n_refine=n_refine, n_iter=60)
         x = ext.x[0]
@@ -355,7 +354,7 @@ def hover_rate_data(
         n_eval += dw.n + prac.n_evaluations
     # the slice: W' on the plane of pitch displacement and flap rate at slice_cg
     blade = Blade(case_params(float(slice_cg)), 0.0)
-    fun = blade.energy_function()
+    fun = energy_function(blade)
     t = np.linspace(-1.2 * A, 1.2 * A, n_grid)
     T, B = np.meshgrid(t, t)
     xs = np.zeros(T.shape + (6,))
@@ -488,7 +487,7 @@ def w_spheres_data(cg="forward", mu: float = 0.15, A_values=(0.5, 1.0, 2.0, 4.0,
     a = np.array(DEFAULT_SCALES if scales is None else scales, dtype=float)
     p = case_params(cg)
     xi = Blade(p, 0.0).equilibrium()
-    fun = Blade(p, mu).energy_function(xi)
+    fun = energy_function(Blade(p, mu), xi)
     w = _Count(fun.W)
     psi = 2 * np.pi * np.arange(n_psi) / n_psi
     dirs = unit_sphere_points(6, n_sphere, seed)
@@ -595,7 +594,7 @@ def rate_azimuth_data(cg="forward", mu_values=(0.0, 0.05, 0.1, 0.15, 0.2, 0.25),
     tests = tests / np.linalg.norm(tests, axis=1, keepdims=True)
     smax, pmax, parg, n_eval = [], [], [], 0
     for mu in mu_values:
-        dw = _Count(Blade(p, mu).energy_function(xi).dW)
+        dw = _Count(energy_function(Blade(p, mu), xi).dW)
         smax.append(sphere_extremum(dw, psi, A, a, dirs).value)
         vals = dw(np.repeat(psi, len(tests)), np.tile(A * tests * a, (n_psi, 1))).reshape(n_psi, -1)
         pmax.append(vals.max(axis=1))
@@ -706,7 +705,7 @@ def _category(res) -> np.ndarray:
 def regions_data(cases=CASES, mu_values=MU_GRID, *, reading: str = "practical", n_psi: int = 72,
                  A: float | None = None, scales=None, test_disturbances=PAPER_TEST_DISTURBANCES,
                  params_overrides: dict | None = None, **engine_options) -> RegionsData:
-    """Run :func:`rotorlyap.stability.blade_stability` for every case and advance ratio.
+    """Run :func:`rotorlyap.analysis.stability.blade_stability` for every case and advance ratio.
 
     ``reading="strict"`` ignores ``test_disturbances`` (whole spheres); ``engine_options``
     (``n_sphere``, ...) go to the engine. A strict search at reduced resolution can only
@@ -1013,7 +1012,7 @@ def convergence_data(n_sphere_values=(0, 64, 256, 1024, 4096), n_stations_values
     psi0 = np.array([0.0])
     sup = np.zeros((len(CASES), len(n_sphere_values)))
     for i, cg in enumerate(CASES):
-        fun = Blade(case_params(cg), 0.0).energy_function()
+        fun = energy_function(Blade(case_params(cg), 0.0))
         for j, ns in enumerate(n_sphere_values):
             sup[i, j] = sphere_extremum(fun.dW, psi0, DEFAULT_A, a, unit_sphere_points(6, int(ns)),
                                         n_refine=16, n_iter=60).value[0]
@@ -1028,10 +1027,10 @@ def convergence_data(n_sphere_values=(0, 64, 256, 1024, 4096), n_stations_values
         p = case_params("forward", n_stations=int(ns))
         blade = Blade(p, 0.0)
         xi = blade.equilibrium()
-        fun = blade.energy_function(xi)
+        fun = energy_function(blade, xi)
         sup_st[j] = sphere_extremum(fun.dW, psi0, DEFAULT_A, a, unit_sphere_points(6, 1024),
                                     n_refine=16, n_iter=60).value[0]
-        dwf = Blade(p, mu_check).energy_function(xi).dW
+        dwf = energy_function(Blade(p, mu_check), xi).dW
         vals = dwf(np.repeat(psi, len(tests)), np.tile(tests * a, (psi.size, 1))).reshape(psi.size, -1)
         prac[j] = vals.max(axis=1).mean()
     frac, pos = [], []

@@ -11,9 +11,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..examples import PeriodicSystem
-from ..lyapunov import TechnicalStabilityResult, technical_stability
-from ..simulation import simulate
+from ..methods.examples import PeriodicSystem
+from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
+from ..methods.simulation import simulate
 
 __all__ = [
     "PhasePortraitData", "phase_portrait_data", "plot_phase_portrait",
@@ -75,7 +75,7 @@ def phase_portrait_data(
     Parameters
     ----------
     system : PeriodicSystem
-        A 2-state system (see :mod:`rotorlyap.examples`).
+        A 2-state system (see :mod:`rotorlyap.methods.examples`).
     result : TechnicalStabilityResult
         Its certificate from :func:`rotorlyap.technical_stability`.
     j : int

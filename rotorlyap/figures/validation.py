@@ -4,12 +4,12 @@ Data functions return frozen dataclasses (no plotting) and take their grids as a
 drawing functions take that data and matplotlib ``Axes``. The chain is
 
 1. :func:`steady_motions`: the true periodic motion of every case at every advance ratio
-   (:func:`rotorlyap.periodic_motion.periodic_motion`), computed once and reused;
+   (:func:`rotorlyap.model.steady.periodic_motion`), computed once and reused;
 2. :func:`floquet_data`: Floquet modes about it and about the hover equilibrium
-   (:mod:`rotorlyap.blade_floquet`);
+   (:mod:`rotorlyap.analysis.floquet`);
 3. :func:`scan_data`: the engine's verdict on a (psi, mu) grid for several Liapunov functions
    and steady motions (:data:`CANDIDATES`): the rigorous counterpart of the paper's Fig. 8;
-4. :func:`validation_data`: simulated motions against those verdicts (:mod:`rotorlyap.validation`);
+4. :func:`validation_data`: simulated motions against those verdicts (:mod:`rotorlyap.methods.validation`);
 5. :func:`motion_data`: what the motion does where a reading marks instability.
 
 Conventions as :mod:`rotorlyap.figures.paper`: ``psi = 0`` over the tail, ``psi = 90 deg``
@@ -22,14 +22,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..blade import Blade
-from ..blade_floquet import floquet_sweep, tabulate_motion
-from ..parameters import BladeParameters
-from ..periodic_motion import PeriodicMotionError, periodic_motion
-from ..quadratic import optimised_quadratic_function, quadratic_function
-from ..simulation import scaled_norm
-from ..stability import DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES, blade_stability, disturbed_system
-from ..validation import Validation, long_run, validate
+from ..analysis.floquet import floquet_sweep
+from ..analysis.functions import optimised_quadratic_function, quadratic_function
+from ..analysis.stability import blade_stability
+from ..conventions import DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
+from ..errors import NotAsymptoticallyStableError, PeriodicMotionError
+from ..methods.sampling import sphere_extremum, unit_sphere_points
+from ..methods.simulation import scaled_norm, simulate
+from ..methods.validation import long_run, validate
+from ..model.blade import Blade
+from ..model.parameters import BladeParameters
+from ..model.steady import disturbed_rhs, periodic_motion, tabulate_motion
 
 __all__ = [
     "CASES", "MU_FLOQUET", "MU_SCAN", "CANDIDATES", "Candidate", "SCAN_CATEGORY_NAMES",
@@ -84,10 +87,10 @@ class SteadyMotions:
     mu_values : numpy.ndarray
         (m,).
     found : numpy.ndarray
-        Boolean (k, m): :func:`rotorlyap.periodic_motion.periodic_motion` converged.
+        Boolean (k, m): :func:`rotorlyap.model.steady.periodic_motion` converged.
     distance : numpy.ndarray
         ``max_psi ||xi(psi) - xi_hover||`` in the scaled norm of
-        :data:`rotorlyap.stability.DEFAULT_SCALES`, (k, m): how far the paper's steady motion
+        :data:`rotorlyap.analysis.stability.DEFAULT_SCALES`, (k, m): how far the paper's steady motion
         is from the true one. NaN where not found.
     harmonics_deg : numpy.ndarray
         Mean, cos and sin first harmonics of flap, lag, pitch, deg, (k, m, 3, 3).
@@ -119,7 +122,8 @@ class SteadyMotions:
     motions: dict = field(default_factory=dict, compare=False, repr=False)
 
     def steady(self, case: str, mu: float):
-        """``(xi, dxi)`` of the periodic motion, or None if not found."""
+        """The tabulated periodic motion as a :class:`~rotorlyap.model.steady.SteadyMotion`, or
+        None if not found."""
         m = self.motions.get((case, round(float(mu), 6)))
         return None if m is None else m.steady
 
@@ -139,7 +143,7 @@ def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_
     at the root, stall), so the Fourier series converges slowly and between the collocation
     points the residual ``|h(psi, xi) - xi'|`` of 64 points is up to about 1e-2 in the
     scaled norm at ``mu = 0.25``, ten times less with 256. The motion is then tabulated
-    (:func:`rotorlyap.blade_floquet.tabulate_motion`, ``n_table`` azimuths) for fast
+    (:func:`rotorlyap.analysis.floquet.tabulate_motion`, ``n_table`` azimuths) for fast
     evaluation. :attr:`SteadyMotions.residual` is the largest scaled residual on 4001
     azimuths: the size of ``f(psi, 0)``, the part of ``W'`` linear in ``x``.
     """
@@ -169,7 +173,7 @@ def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_
                 row.append(str(exc))
                 continue
             row.append("")
-            tab = tabulate_motion(pm.xi, pm.dxi, n_table)
+            tab = tabulate_motion(pm, n_table)
             motions[(case, round(float(mu), 6))] = tab
             found[i, j] = True
             dist[i, j] = float(scaled_norm(tab.xi(grid) - xh, DEFAULT_SCALES).max())
@@ -244,7 +248,7 @@ class FloquetData:
 
 
 def floquet_data(motions: SteadyMotions, *, n_steps: int = 1024) -> FloquetData:
-    """:func:`rotorlyap.blade_floquet.floquet_sweep` of every case of ``motions``, about the
+    """:func:`rotorlyap.analysis.floquet.floquet_sweep` of every case of ``motions``, about the
     periodic motions found there and about the hover equilibrium."""
     per, hov = [], []
     for case in motions.cases:
@@ -391,11 +395,11 @@ class ScanData:
 
 def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_values=MU_SCAN,
               n_psi: int = 24, A: float | None = None, **engine_options) -> ScanData:
-    """Run :func:`rotorlyap.stability.blade_stability` for every candidate, case and advance ratio.
+    """Run :func:`rotorlyap.analysis.stability.blade_stability` for every candidate, case and advance ratio.
 
     The quadratic functions use the default scales as their coordinates (so ``Q = I`` is
     ``diag(1 / a_i**2)``); the optimised weight is found once per case in hover
-    (:func:`rotorlyap.quadratic.optimised_quadratic_function`) and kept at every advance
+    (:func:`rotorlyap.analysis.functions.optimised_quadratic_function`) and kept at every advance
     ratio. Where no quadratic function exists (unstable linearisation) or no periodic motion
     was found, the cells get categories 4 and 5 instead of a result.
     """
@@ -407,7 +411,7 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
     for i, case in enumerate(cases):
         try:
             qo = optimised_quadratic_function(Blade(BladeParameters.table_i(case), 0.0), A=A)
-        except ValueError as exc:
+        except NotAsymptoticallyStableError as exc:
             Qopt[case] = exc
             continue
         Qopt[case] = qo.Q
@@ -435,21 +439,19 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
                 if cand.function == "energy":
                     lyap = None
                 elif cand.function == "quadratic":
-                    lyap = lambda b, xi, dxi: quadratic_function(b, xi, None, dxi)  # noqa: E731
+                    lyap = quadratic_function
                 else:
                     Q = Qopt[case]
                     if isinstance(Q, Exception):
                         cat[c, i, j] = 4
                         row.append(str(Q))
                         continue
-                    lyap = lambda b, xi, dxi, Q=Q: quadratic_function(b, xi, Q, dxi, label="optimised")  # noqa: E731
+                    lyap = lambda b, steady, Q=Q: quadratic_function(b, steady, Q, label="optimised")  # noqa: E731
                 tests = PAPER_TEST_DISTURBANCES if cand.reading == "practical" else None
                 try:
                     r = blade_stability(p, mu, lyapunov=lyap, steady=steady, A=A, n_psi=n_psi,
                                         test_disturbances=tests, **engine_options)
-                except ValueError as exc:
-                    if "not asymptotically stable" not in str(exc):
-                        raise
+                except NotAsymptoticallyStableError as exc:
                     cat[c, i, j] = 4
                     row.append(str(exc))
                     continue
@@ -514,7 +516,7 @@ def validation_data(scan: ScanData, motions: SteadyMotions, case: str, mu_values
                     keys=("energy-practical", "energy", "quadratic", "quadratic-opt"),
                     psi_indices=None, n_directions: int = 16, n_periods: float = 10.0,
                     **options) -> tuple:
-    """:func:`rotorlyap.validation.validate` of the results of ``scan`` (about the periodic
+    """:func:`rotorlyap.methods.validation.validate` of the results of ``scan`` (about the periodic
     motion) for one case at each advance ratio of ``mu_values``.
 
     In hover the system is autonomous, so one start azimuth stands for all; in forward flight
@@ -530,9 +532,9 @@ def validation_data(scan: ScanData, motions: SteadyMotions, case: str, mu_values
         steady = motions.steady(case, mu) if mu > 0 else None
         blade = Blade(p, mu)
         if steady is None:
-            f = disturbed_system(blade, blade.equilibrium() if mu == 0 else Blade(p, 0.0).equilibrium())
+            f = disturbed_rhs(blade, blade.equilibrium() if mu == 0 else Blade(p, 0.0).equilibrium())
         else:
-            f = disturbed_system(blade, *steady)
+            f = disturbed_rhs(blade, steady)
         idx = (0,) if mu == 0 else (psi_indices or (0, n // 3, 2 * n // 3))
         out.append(validate(f, res, label=f"{case} C.G., mu = {mu:g}", psi_indices=idx,
                             n_directions=n_directions, n_periods=n_periods, **options))
@@ -626,13 +628,11 @@ class MotionData:
 
 
 def points_per_revolution(h) -> int:
-    """Output azimuths per revolution of a :class:`rotorlyap.validation.MotionHistory`."""
+    """Output azimuths per revolution of a :class:`rotorlyap.methods.validation.MotionHistory`."""
     return int(round(2 * np.pi / (h.psi[1] - h.psi[0])))
 
 
 def _check(f, h, scales, rtol) -> float:
-    from ..simulation import simulate
-
     last = h.peaks[-1, 0]
     k = points_per_revolution(h)
     s = simulate(f, h.x[-1, :1], float(h.psi[-1]), 2, scales=scales, points_per_period=k,
@@ -668,7 +668,7 @@ def motion_data(*, flutter_periods: int = 15, drift_mu: float = 0.05, drift_peri
     hist, labels, offs, refs, checks = [], [], [], [], []
     for p, mu, n_per, label in experiments:
         xh = Blade(p, 0.0).equilibrium()
-        f = disturbed_system(Blade(p, mu), xh)
+        f = disturbed_rhs(Blade(p, mu), xh)
         h = long_run(f, x0, 0.0, n_per, A=DEFAULT_A, scales=a, label=label, rtol=rtol,
                      atol=rtol * 1e-3, points_per_period=points_per_period)
         hist.append(h)
@@ -762,8 +762,6 @@ def origin_data(functions: dict, radii=None, *, n_psi: int = 12, n_sphere: int =
     ``dW``, and whether it is independent of the azimuth (then one azimuth is searched).
     Strict search: the structured and quasi-random directions of the engine, refined.
     """
-    from ..sampling import sphere_extremum, unit_sphere_points
-
     radii = np.geomspace(1e-4, 1.0, 13) if radii is None else np.asarray(radii, dtype=float)
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
     dirs = unit_sphere_points(a.size, n_sphere, 0)

@@ -3,14 +3,14 @@
 The blade's equations ``z' = h(psi, z)`` are linearised (:meth:`rotorlyap.Blade.jacobian`)
 about a steady motion ``xi(psi)``, ``x' = J(psi) x`` with ``J(psi) = dh/dz(psi, xi(psi))``, and
 the monodromy matrix of that periodic linear system is integrated over one revolution
-(:func:`rotorlyap.floquet.floquet_multipliers`, sixth-order Magnus, 1024 steps by default:
+(:func:`rotorlyap.methods.floquet.floquet_multipliers`, sixth-order Magnus, 1024 steps by default:
 the Jacobian has kinks where sections cross breakpoints of the airfoil model, and a fixed-step
 method of high order copes with them far better than adaptive integration). Two steady
 motions are offered:
 
 ``"periodic"``
     the true periodic solution of the forward-flight equations
-    (:func:`rotorlyap.periodic_motion.periodic_motion`); in hover the equilibrium. Floquet
+    (:func:`rotorlyap.model.steady.periodic_motion`); in hover the equilibrium. Floquet
     theory then decides the (local, asymptotic) stability of that motion.
 ``"hover"``
     the paper's choice: the hover equilibrium reused at every advance ratio. In forward flight
@@ -30,7 +30,7 @@ minus the modal assurance criterion of their eigenvectors, the state at ``psi = 
 Floquet mode), and the integer ``k`` of ``omega = Im(log m) / (2 pi) + k`` chosen closest to
 the previous frequency of that track. Each track keeps the name it had in hover, where it is
 named after the hinge whose angle dominates its eigenvector (flap, lag or pitch, as
-:func:`rotorlyap.derived.modes_from_jacobian`); the dominant hinge at every advance ratio is
+:func:`rotorlyap.model.modes.modes_from_jacobian`); the dominant hinge at every advance ratio is
 recorded too. A fine grid (steps of 0.025 or less) keeps the matching unambiguous.
 
 Damping is given as the growth rate ``sigma`` (per rev; negative = decaying, independent of
@@ -44,22 +44,14 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from .blade import Blade
-from .floquet import FloquetResult, floquet_multipliers
-from .parameters import BladeParameters
+from ..conventions import HINGES, TWO_PI
+from ..errors import PeriodicMotionError
+from ..methods.floquet import FloquetResult, floquet_multipliers
+from ..model.blade import Blade
+from ..model.parameters import BladeParameters
+from ..model.steady import as_steady_motion, steady_motion
 
-__all__ = [
-    "HINGES", "STEADY_CHOICES", "BladeFloquetPoint", "FloquetSweep", "blade_floquet",
-    "floquet_sweep", "TabulatedMotion", "tabulate_motion", "steady_motion",
-]
-
-TWO_PI = 2.0 * np.pi
-
-#: Hinge names in the order of the state vector.
-HINGES = ("flap", "lag", "pitch")
-
-#: The steady motions :func:`blade_floquet` linearises about.
-STEADY_CHOICES = ("periodic", "hover")
+__all__ = ["BladeFloquetPoint", "FloquetSweep", "blade_floquet", "floquet_sweep"]
 
 #: Magnus steps per period (see the module docstring).
 DEFAULT_N_STEPS = 1024
@@ -108,7 +100,7 @@ class BladeFloquetPoint:
     @property
     def stable(self) -> bool:
         """Asymptotically stable: every multiplier inside the unit circle (with the margin of
-        :func:`rotorlyap.floquet.floquet_multipliers`)."""
+        :func:`rotorlyap.methods.floquet.floquet_multipliers`)."""
         return bool(self.found and self.floquet is not None and self.floquet.stable)
 
     @property
@@ -135,91 +127,8 @@ def _not_found(mu: float, steady: str, message: str) -> BladeFloquetPoint:
                              dominant=("",) * 6, spectral_radius=float("nan"), floquet=None)
 
 
-@dataclass(frozen=True)
-class TabulatedMotion:
-    """A periodic steady motion as a piecewise cubic Hermite interpolant: fast to evaluate.
-
-    :class:`rotorlyap.periodic_motion.PeriodicMotion` evaluates its Fourier series with one
-    complex exponential per harmonic and azimuth, several times the cost of the blade's
-    right-hand side for the large batches of the sphere searches. This class samples ``xi``
-    and ``xi'`` once on ``n`` uniform azimuths and interpolates them by the periodic cubic
-    Hermite interpolant; :meth:`dxi` is the *exact derivative of the interpolant*, so that
-    ``(xi, dxi)`` is a consistent, continuously differentiable steady motion and the disturbed
-    equations about it are exact (a certificate about it is a certificate for the blade). It
-    differs from the series by ``max_error`` (of order ``h**4`` times the fourth derivative,
-    ``h = 2 pi / n``).
-
-    Attributes
-    ----------
-    values, slopes : numpy.ndarray
-        ``xi`` and ``xi'`` on the grid ``2 pi j / n``, shape (n, 6).
-    max_error : float
-        Largest ``|xi_interpolated - xi|`` found at the grid midpoints (rad, rad/rad).
-    """
-
-    values: np.ndarray
-    slopes: np.ndarray
-    max_error: float
-
-    def _eval(self, psi, derivative: bool) -> np.ndarray:
-        psi = np.asarray(psi, dtype=float)
-        n = self.values.shape[0]
-        h = TWO_PI / n
-        u = np.mod(psi, TWO_PI) / h
-        j = np.minimum(np.floor(u).astype(int), n - 1)
-        t = (u - j)[..., None]
-        j1 = (j + 1) % n
-        P0, P1 = self.values[j], self.values[j1]
-        D0, D1 = h * self.slopes[j], h * self.slopes[j1]
-        t2 = t * t
-        if derivative:
-            return ((6 * t2 - 6 * t) * (P0 - P1) + (3 * t2 - 4 * t + 1) * D0 + (3 * t2 - 2 * t) * D1) / h
-        t3 = t2 * t
-        return ((2 * t3 - 3 * t2 + 1) * P0 + (t3 - 2 * t2 + t) * D0 + (-2 * t3 + 3 * t2) * P1
-                + (t3 - t2) * D1)
-
-    def xi(self, psi) -> np.ndarray:
-        """The interpolated motion, shape ``psi.shape + (6,)``."""
-        return self._eval(psi, False)
-
-    def dxi(self, psi) -> np.ndarray:
-        """The derivative of the interpolant, shape ``psi.shape + (6,)``."""
-        return self._eval(psi, True)
-
-    @property
-    def steady(self) -> tuple:
-        """``(xi, dxi)``, the form :func:`rotorlyap.stability.blade_stability` takes."""
-        return (self.xi, self.dxi)
-
-
-def tabulate_motion(xi, dxi, n: int = 4096) -> TabulatedMotion:
-    """:class:`TabulatedMotion` of the steady motion ``(xi, dxi)`` on ``n`` azimuths."""
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 8:
-        raise ValueError(f"n must be an integer >= 8, got {n!r}")
-    grid = TWO_PI * np.arange(n) / n
-    tab = TabulatedMotion(values=np.asarray(xi(grid), dtype=float), slopes=np.asarray(dxi(grid), dtype=float),
-                          max_error=0.0)
-    mid = grid + 0.5 * TWO_PI / n
-    err = float(np.abs(tab.xi(mid) - np.asarray(xi(mid))).max())
-    return TabulatedMotion(values=tab.values, slopes=tab.slopes, max_error=err)
-
-
-def steady_motion(params: BladeParameters, mu: float, steady: str = "periodic"):
-    """``(xi, dxi)`` callables of the chosen steady motion, or raise
-    :class:`rotorlyap.periodic_motion.PeriodicMotionError` if no periodic motion is found."""
-    if steady not in STEADY_CHOICES:
-        raise ValueError(f"steady must be one of {STEADY_CHOICES}, got {steady!r}")
-    if steady == "hover" or mu == 0.0:
-        xi = Blade(params, 0.0).equilibrium()
-        return (lambda psi: np.broadcast_to(xi, np.shape(psi) + (6,)).copy(),
-                lambda psi: np.zeros(np.shape(psi) + (6,)))
-    from .periodic_motion import periodic_motion
-
-    return periodic_motion(params, mu).steady
-
-
-def blade_floquet(params: BladeParameters, mu: float, *, steady: str = "periodic",
-                  motion=None, n_steps: int = DEFAULT_N_STEPS, constant_shortcut: bool = True
+def blade_floquet(params: BladeParameters, mu: float, *, steady="periodic",
+                  n_steps: int = DEFAULT_N_STEPS, constant_shortcut: bool = True
                   ) -> BladeFloquetPoint:
     """Floquet multipliers of the blade linearised about its steady motion at ``mu``.
 
@@ -229,11 +138,12 @@ def blade_floquet(params: BladeParameters, mu: float, *, steady: str = "periodic
         The blade (a ``None`` collective is trimmed in hover and kept).
     mu : float
         Advance ratio (>= 0).
-    steady : {"periodic", "hover"}
-        The steady motion (module docstring).
-    motion : (callable, callable), optional
-        ``(xi, dxi)`` to use instead of computing it (e.g. a
-        :attr:`rotorlyap.periodic_motion.PeriodicMotion.steady` already at hand).
+    steady : {"periodic", "hover"} or a steady motion
+        The steady motion to compute by name (module docstring), or one already at hand (a
+        :class:`~rotorlyap.model.steady.SteadyMotion`, a
+        :class:`~rotorlyap.model.steady.PeriodicMotion`, or anything
+        :func:`~rotorlyap.model.steady.as_steady_motion` takes); a given motion is labelled
+        ``"hover"`` if it is constant at ``mu > 0``, ``"periodic"`` otherwise.
     n_steps : int
         Magnus steps per revolution.
     constant_shortcut : bool
@@ -245,16 +155,20 @@ def blade_floquet(params: BladeParameters, mu: float, *, steady: str = "periodic
     BladeFloquetPoint
         ``found=False`` (not an exception) if no periodic motion is found.
     """
-    from .periodic_motion import PeriodicMotionError
-
     mu = float(mu)
     if not (np.isfinite(mu) and mu >= 0.0):
         raise ValueError(f"mu must be an advance ratio >= 0, got {mu!r}")
     blade = Blade(params, mu)
-    try:
-        xi, _ = motion if motion is not None else steady_motion(params, mu, steady)
-    except PeriodicMotionError as exc:
-        return _not_found(mu, steady, str(exc))
+    if isinstance(steady, str):
+        label = steady
+        try:
+            motion = steady_motion(params, mu, steady)
+        except PeriodicMotionError as exc:
+            return _not_found(mu, steady, str(exc))
+    else:
+        motion = as_steady_motion(steady, blade)
+        label = "hover" if (motion.is_constant and mu > 0.0) else "periodic"
+    xi = motion.xi
     if mu == 0.0 and not blade.has_cyclic and constant_shortcut:
         A = blade.jacobian(0.0, xi(np.zeros(1))[0])
         res = floquet_multipliers(A, TWO_PI)
@@ -274,7 +188,7 @@ def blade_floquet(params: BladeParameters, mu: float, *, steady: str = "periodic
         with np.errstate(divide="ignore"):
             eta = np.log(m.astype(complex)) / TWO_PI
     V = V / np.linalg.norm(V, axis=0)
-    return BladeFloquetPoint(mu=mu, steady=steady, found=True, message="", multipliers=m.astype(complex),
+    return BladeFloquetPoint(mu=mu, steady=label, found=True, message="", multipliers=m.astype(complex),
                              exponents=eta.astype(complex), eigenvectors=V.astype(complex),
                              dominant=_dominant(V), spectral_radius=float(res.spectral_radius),
                              floquet=res)
@@ -381,7 +295,8 @@ def floquet_sweep(params: BladeParameters, mu_values, *, steady: str = "periodic
     n_steps : int
         Magnus steps per revolution.
     motions : dict, optional
-        ``{mu: (xi, dxi)}`` periodic motions already computed (others are computed); a string
+        ``{mu: motion}`` periodic motions already computed (any steady motion
+        :func:`~rotorlyap.model.steady.as_steady_motion` takes; others are computed); a string
         or an exception as the value records a failure (no periodic motion) without retrying.
 
     Returns
@@ -406,7 +321,7 @@ def floquet_sweep(params: BladeParameters, mu_values, *, steady: str = "periodic
         if isinstance(motion, (str, Exception)):  # a failure recorded by the caller
             pt = _not_found(float(m_), steady, str(motion))
         else:
-            pt = blade_floquet(params, m_, steady=steady, motion=motion, n_steps=n_steps)
+            pt = blade_floquet(params, m_, steady=steady if motion is None else motion, n_steps=n_steps)
         msgs.append(pt.message)
         if not pt.found:
             continue

@@ -142,7 +142,7 @@ def simulate_within(f: Callable, x0, psi0: float, n_periods: float, A: float, *,
 
 def start_directions(n: int, dim: int = 6, seed: int = 1) -> np.ndarray:
     """``n`` deterministic unit directions (scaled coordinates) from a scrambled Sobol'
-    sequence with the given seed (:func:`rotorlyap.sampling.unit_sphere_points` without its
+    sequence with the given seed (:func:`rotorlyap.methods.sampling.unit_sphere_points` without its
     structured part), shape ``(n, dim)``."""
     pts = unit_sphere_points(dim, max(n, 2), seed)
     structured = 2 * dim + 2 * dim * (dim - 1)
@@ -422,7 +422,7 @@ def last_revolution(history: MotionHistory, offset=None, index: int = 0) -> Call
     callable
         ``g(psi)`` -> states of shape ``psi.shape + (n,)``, a cubic interpolant of the last
         revolution with ``psi`` taken modulo the period: a start for
-        :func:`rotorlyap.periodic_motion.periodic_motion` when a simulation has settled onto
+        :func:`rotorlyap.model.steady.periodic_motion` when a simulation has settled onto
         a periodic motion that Newton's method does not reach from the hover equilibrium.
     """
     from scipy.interpolate import CubicSpline

@@ -1,13 +1,13 @@
 """Derived quantities of a blade parameter set: the numbers a rotor dynamicist checks first.
 
-:func:`derived_quantities` collects, for one :class:`~rotorlyap.parameters.BladeParameters`,
+:func:`derived_quantities` collects, for one :class:`~rotorlyap.model.parameters.BladeParameters`,
 
 * mass data: blade mass, flap inertia, Lock number, solidity;
 * hover performance: thrust coefficient, ``C_T / sigma``, mean induced inflow, the trimmed
-  collective (:func:`rotorlyap.trim.hover_trim`), the hover equilibrium hinge angles and the
+  collective (:func:`rotorlyap.model.trim.hover_trim`), the hover equilibrium hinge angles and the
   pitch of the blade chord relative to the hub plane;
 * the linearised modes at the hover equilibrium, from the eigenvalues of
-  :meth:`rotorlyap.blade.Blade.jacobian`, once in vacuum (``air_density = 0``: inertia,
+  :meth:`rotorlyap.model.blade.Blade.jacobian`, once in vacuum (``air_density = 0``: inertia,
   centrifugal and gravity forces, hinge springs and dampers only) and once with air, each mode
   named after the hinge whose angle dominates its eigenvector;
 * classical closed-form estimates to compare them with, and the blade-element-theory pitch
@@ -18,7 +18,7 @@ the rotor speed Omega, because the independent variable is the azimuth ``psi = O
 (an eigenvalue ``s`` of the psi-form Jacobian means ``exp(s psi) = exp(s Omega t)``).
 
 Closed forms (derived from the effective potential ``U = V - T0`` and the mass matrix at zero
-hinge angles for a blade whose mass lies on its chord line; :mod:`rotorlyap.derivation`
+hinge angles for a blade whose mass lies on its chord line; :mod:`rotorlyap.model.derivation`
 gives the exact expressions, shown in the book):
 
 * flap:  ``nu_beta^2 = 1 + e_beta S_beta / I_beta`` with the flap hinge offset
@@ -41,13 +41,13 @@ from functools import lru_cache
 
 import numpy as np
 
-from .blade import Blade, mass_properties
+from ..conventions import HINGES
+from .blade import Blade
+from .mass import mass_properties
 from .inflow import mean_inflow
 from .parameters import BladeParameters
-from .trim import hover_trim
 
 __all__ = [
-    "HINGES",
     "Mode",
     "ClosedForms",
     "DerivedQuantities",
@@ -58,10 +58,6 @@ __all__ = [
     "derived_quantities",
     "hover_modes",
 ]
-
-#: Hinge names in the order of the state vector.
-HINGES: tuple[str, str, str] = ("flap", "lag", "pitch")
-
 
 # --------------------------------------------------------------------------------------
 # Modes
@@ -201,7 +197,7 @@ class ClosedForms:
 def closed_forms(params: BladeParameters, theta: float = 0.0) -> ClosedForms:
     """Closed-form rotating frequencies of the blade (zero flap and lag, pitch ``theta``).
 
-    The mass moments come from :func:`rotorlyap.blade.mass_properties` (about the pitch hinge,
+    The mass moments come from :func:`rotorlyap.model.blade.mass_properties` (about the pitch hinge,
     blade axes) shifted to the flap and lag hinges along the radial hub elements. The vertical
     element e2 and the couplings between the hinges are left out; for the Table I blade the
     flap and lag forms match the vacuum eigenvalues to 1e-4, the pitch form to 1e-3 with the

@@ -1,8 +1,8 @@
 """Hover trim: the collective pitch for which the rotor thrust equals the helicopter weight.
 
 The thrust is ``n_blades`` times the vertical aerodynamic force of one blade at its hover
-equilibrium (:meth:`rotorlyap.blade.Blade.equilibrium`), with the induced inflow of
-:mod:`rotorlyap.inflow` (momentum theory for thrust = weight, or ``params.inflow_ratio``).
+equilibrium (:func:`rotorlyap.model.equilibrium.hover_equilibrium`), with the induced inflow of
+:mod:`rotorlyap.model.inflow` (momentum theory for thrust = weight, or ``params.inflow_ratio``).
 Since that inflow already assumes thrust = weight, the trimmed state is self-consistent.
 
 The equilibrium is followed by continuation along the flap angle from the unloaded blade, so
@@ -18,15 +18,15 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 
 import numpy as np
+from scipy.optimize import brentq, root
 
+from ..errors import TrimError
+from .equations import BladeEquations
+from .equilibrium import hover_equilibrium
+from .inflow import mean_inflow
 from .parameters import BladeParameters
 
-__all__ = ["HoverTrim", "hover_trim", "TrimError"]
-
-
-class TrimError(RuntimeError):
-    """The hover trim did not converge."""
-
+__all__ = ["HoverTrim", "hover_trim"]
 
 @dataclass(frozen=True)
 class HoverTrim:
@@ -69,9 +69,7 @@ class _Branch:
     """
 
     def __init__(self, params: BladeParameters):
-        from .blade import Blade
-
-        self.blade = Blade(replace(params, collective=0.0, cyclic_cos=0.0, cyclic_sin=0.0))
+        self.blade = BladeEquations(replace(params, collective=0.0, cyclic_cos=0.0, cyclic_sin=0.0))
         self.calls = 0
 
     def at(self, beta: float, start: np.ndarray) -> tuple[float, np.ndarray, float]:
@@ -79,12 +77,10 @@ class _Branch:
 
         ``start`` holds the starting (lag, pitch, collective), rad.
         """
-        from scipy.optimize import root
-
         self.calls += 1
 
         def residual(u):
-            b = self.blade._with_collective(u[2])
+            b = self.blade.with_collective(u[2])
             return b.rhs(0.0, np.array([beta, u[0], u[1], 0.0, 0.0, 0.0]))[3:]
 
         sol = root(residual, start, method="hybr", options={"xtol": 1e-13})
@@ -99,8 +95,9 @@ class _Branch:
             err = np.inf
         if not err < 1e-9:
             raise TrimError(f"hover_trim: no equilibrium found at flap angle {beta:.5f} rad "
-                            f"({sol.message}, Newton correction {err:.3g} rad)")
-        b = self.blade._with_collective(sol.x[2])
+                            f"({sol.message}, Newton correction {err:.3g} rad)",
+                            flap_angle=float(beta), residual=err, tolerance=1e-9)
+        b = self.blade.with_collective(sol.x[2])
         z = np.array([beta, sol.x[0], sol.x[1], 0.0, 0.0, 0.0])
         return float(b.rotor_thrust(0.0, z)), z, float(sol.x[2])
 
@@ -133,32 +130,29 @@ def hover_trim(params: BladeParameters, step: float = 0.01, max_flap: float = 0.
 
     Raises
     ------
-    TrimError
-        In vacuum, if the weight is not positive, if no equilibrium is found along the branch,
+    rotorlyap.errors.TrimError
+        (a ``RuntimeError``) In vacuum, if the weight is not positive, if no equilibrium is found along the branch,
         or if the thrust does not reach the weight below ``max_flap``.
     """
-    from scipy.optimize import brentq
-
-    from .inflow import mean_inflow
-
     weight = params.helicopter_mass * params.gravity
     if params.air_density <= 0.0:
-        raise TrimError("hover_trim: no thrust in vacuum (air_density = 0); give a collective")
+        raise TrimError("hover_trim: no thrust in vacuum (air_density = 0); give a collective", weight=weight)
     if weight <= 0.0:
         raise TrimError(f"hover_trim: the weight helicopter_mass * gravity = {weight!r} N must be > 0")
     branch = _Branch(params)
     # the unloaded blade: zero collective
-    z0 = branch.blade.equilibrium()
+    z0 = hover_equilibrium(branch.blade)
     b_lo = float(z0[0])
     t_lo, z_lo, c_lo = branch.at(b_lo, np.array([z0[1], z0[2], 0.0]))
     if t_lo >= weight:
         raise TrimError(f"hover_trim: thrust {t_lo:.6g} N at zero collective already reaches the "
-                        f"weight {weight:.6g} N")
+                        f"weight {weight:.6g} N", thrust=t_lo, weight=weight, flap_angle=b_lo)
     while True:
         b_hi = b_lo + step
         if b_hi > max_flap:
             raise TrimError(f"hover_trim: thrust {t_lo:.6g} N at flap angle {b_lo:.4g} rad is still "
-                            f"below the weight {weight:.6g} N (max_flap = {max_flap} rad)")
+                            f"below the weight {weight:.6g} N (max_flap = {max_flap} rad)",
+                            thrust=t_lo, weight=weight, flap_angle=b_lo)
         t_hi, z_hi, c_hi = branch.at(b_hi, np.array([z_lo[1], z_lo[2], c_lo]))
         if t_hi >= weight:
             break
@@ -169,9 +163,10 @@ def hover_trim(params: BladeParameters, step: float = 0.01, max_flap: float = 0.
                             xtol=xtol, full_output=True, maxiter=100)
     except (RuntimeError, ValueError) as exc:
         raise TrimError(f"hover_trim: Brent's method failed between flap angles {b_lo:.4f} and "
-                        f"{b_hi:.4f} rad: {exc}") from exc
+                        f"{b_hi:.4f} rad: {exc}", weight=weight, flap_angle=b_lo) from exc
     if not res.converged:  # pragma: no cover
-        raise TrimError(f"hover_trim: Brent's method did not converge ({res.flag})")
+        raise TrimError(f"hover_trim: Brent's method did not converge ({res.flag})", weight=weight,
+                        iterations=res.iterations)
     thrust, z, theta0 = branch.at(beta0, start)
     R = params.radius
     ct = thrust / (params.air_density * math.pi * R * R * (params.rotor_speed * R) ** 2)

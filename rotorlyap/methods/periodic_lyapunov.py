@@ -10,7 +10,7 @@ has exactly one T-periodic solution; it is symmetric positive definite,
     ``P(psi) = int_psi^inf Phi(s, psi)^T Q Phi(s, psi) ds``,
 
 and ``W(psi, x) = x^T P(psi) x`` decreases along the solutions: ``W' = -x^T Q x``. This module
-knows nothing about rotor blades (:mod:`rotorlyap.floquet` explains the conventions for
+knows nothing about rotor blades (:mod:`rotorlyap.methods.floquet` explains the conventions for
 ``A``).
 
 Method
@@ -40,7 +40,7 @@ transition matrix ``S_j = Phi(psi_{j+1}, psi_j)`` and the Gramian
 ``method="dop853"`` (default) integrates ``S_j`` and ``G_j`` for all pieces at once (one
 vectorised call of ``A`` with ``K`` azimuths per stage), with error control; the grid is
 ``n_grid`` points and the default interpolation is ``"fourier"``. The fixed-step methods
-(``"magnus6"``, ``"magnus4"``, ``"rk4"``, see :mod:`rotorlyap.floquet`) take each step as a
+(``"magnus6"``, ``"magnus4"``, ``"rk4"``, see :mod:`rotorlyap.methods.floquet`) take each step as a
 piece, so the grid is the ``n_steps`` step points (default interpolation ``"hermite"``): they
 integrate the augmented linear system ``Z' = [[-A^T, Q], [0, A]] Z``, whose transition matrix
 over a step is ``[[S^-T, S^-T G], [0, S]]`` (the time-varying form of Van Loan's method), so
@@ -81,7 +81,8 @@ from .floquet import (
     _System,
     floquet_multipliers,
 )
-from .reporting import format_small
+from ..errors import NotAsymptoticallyStableError
+from ..reporting import format_small
 
 __all__ = ["INTERPOLATIONS", "PeriodicLyapunovSolution", "periodic_lyapunov"]
 
@@ -341,9 +342,10 @@ def _constant_solution(A: np.ndarray, period: float, Q: np.ndarray, tol: float):
     res = floquet_multipliers(A, period, tol=tol)
     if not res.stable:
         lam = np.linalg.eigvals(A)
-        raise ValueError(
+        raise NotAsymptoticallyStableError(
             _unstable_message(res)
-            + f" (largest real part of an eigenvalue of A: {np.max(lam.real):.6g})"
+            + f" (largest real part of an eigenvalue of A: {np.max(lam.real):.6g})",
+            spectral_radius=float(res.spectral_radius), growth_rate=float(np.max(lam.real)),
         )
     P = _symmetric(solve_continuous_lyapunov(A.T, -Q))
     stats = _residual_stats(A, P, np.zeros_like(P), Q)
@@ -396,7 +398,8 @@ def _grid_values(sys: _System, period: float, Q: np.ndarray, S, G, trace_integra
         period, tol,
     )
     if not res.stable:
-        raise ValueError(_unstable_message(res))
+        raise NotAsymptoticallyStableError(_unstable_message(res), spectral_radius=float(res.spectral_radius),
+                                           growth_rate=float(np.max(res.exponents.real)))
     n, K = sys.n, S.shape[0]
     Phi = np.eye(n)
     Gtot = np.zeros((n, n))
@@ -509,9 +512,11 @@ def periodic_lyapunov(
 
     Raises
     ------
+    rotorlyap.errors.NotAsymptoticallyStableError
+        ``x' = A x`` not asymptotically stable (a ``ValueError``; it carries the spectral
+        radius of the monodromy matrix and the largest growth rate).
     ValueError
-        ``x' = A x`` not asymptotically stable (the message gives the spectral radius of the
-        monodromy matrix); non-positive ``period``; ``Q`` not symmetric positive definite or of
+        Non-positive ``period``; ``Q`` not symmetric positive definite or of
         the wrong shape; ``A`` of the wrong shape or non-finite; bad ``method``,
         ``interpolation``, ``n_grid`` or ``n_steps``; more than ``max_evaluations``.
     TypeError

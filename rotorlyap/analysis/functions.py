@@ -1,9 +1,23 @@
-"""Quadratic Liapunov functions of the blade, from the periodic Lyapunov equation.
+"""Liapunov functions of the blade: the paper's energy function and quadratic functions.
 
+Both take the blade and a steady motion (a :class:`~rotorlyap.model.steady.SteadyMotion`, or
+anything :func:`~rotorlyap.model.steady.as_steady_motion` takes) and give the vectorised
+``W(psi, x)``, ``dW(psi, x)`` and ``f(psi, x)`` that
+:func:`rotorlyap.analysis.stability.blade_stability` and
+:func:`rotorlyap.methods.lyapunov.technical_stability` take:
+
+* :func:`energy_function`, :class:`EnergyFunction`: the energy of the disturbed motion, the
+  paper's choice, with its derivative along the motion from generated code;
+* :func:`quadratic_function`, :func:`optimised_quadratic_function`,
+  :class:`QuadraticFunction`: ``x^T P(psi) x`` from the periodic Lyapunov equation of the
+  linearised blade.
+
+Quadratic functions
+-------------------
 The paper's energy function lacks the aerodynamic coupling of the blade (the flap moment due
 to pitch has no matching pitch moment due to flap), so its derivative along the motions has
 terms linear in the rates and of either sign, and it certifies nothing in the strict reading
-(:mod:`rotorlyap.stability`). A quadratic form built from the *linearised* blade does not
+(:mod:`rotorlyap.analysis.stability`). A quadratic form built from the *linearised* blade does not
 have that defect: if the blade linearised about its steady motion ``xi(psi)``,
 
     ``x' = J(psi) x``,  ``J(psi) = dh/dz (psi, xi(psi))``  (:meth:`rotorlyap.Blade.jacobian`),
@@ -11,7 +25,7 @@ have that defect: if the blade linearised about its steady motion ``xi(psi)``,
 is asymptotically stable (every Floquet multiplier inside the unit circle), then for every
 symmetric positive-definite ``Q`` the periodic Lyapunov equation
 ``P' + J^T P + P J = -Q`` has one periodic, positive-definite solution ``P(psi)``
-(:func:`rotorlyap.periodic_lyapunov.periodic_lyapunov`) and
+(:func:`rotorlyap.methods.periodic_lyapunov.periodic_lyapunov`) and
 
     ``W(psi, x) = x^T P(psi) x``,
     ``W'(psi, x) = x^T P'(psi) x + 2 x^T P(psi) f(psi, x)``,
@@ -28,7 +42,7 @@ near ``x = 0``, with this or any other smooth ``W`` with a minimum at ``x = 0``.
 Units and scaling
 -----------------
 All computations are done in the scaled coordinates ``y_i = x_i / a_i`` of the norm
-``||x|| = |y|`` (the ``a_i`` default to :data:`rotorlyap.stability.DEFAULT_SCALES`), where the
+``||x|| = |y|`` (the ``a_i`` default to :data:`rotorlyap.conventions.DEFAULT_SCALES`), where the
 six components are of order one; ``P`` is returned in state units. The default weight is
 ``Q = diag(1 / a_i**2)``, the identity in scaled coordinates: then ``W' = -||x||**2`` per rad of
 azimuth along the linearised motions, and ``W`` (dimensionless, "norm squared times rad") is
@@ -52,72 +66,328 @@ from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize
 
-from .periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
-from .reporting import format_small
+from ..conventions import DEFAULT_SCALES, TWO_PI
+from ..errors import NotAsymptoticallyStableError
+from ..methods.floquet import floquet_multipliers
+from ..methods.periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
+from ..methods.sampling import unit_sphere_points
+from ..model.blade import Blade
+from ..model.equations import sym3_matvec
+from ..model.steady import SteadyMotion, as_steady_motion
+from ..reporting import format_small
 
 __all__ = [
     "DEFAULT_N_STEPS",
+    "EnergyFunction",
+    "PositivityReport",
     "QuadraticFunction",
     "certified_radius_estimate",
+    "energy_function",
+    "energy_rate_terms",
+    "linearisation",
     "optimised_quadratic_function",
     "quadratic_function",
-    "linearisation",
 ]
-
-TWO_PI = 2.0 * np.pi
 
 #: Magnus steps per period for the periodic Lyapunov equation of the blade in forward flight
 #: (the Jacobian has kinks where sections cross the airfoil's breakpoints; 4096 sixth-order
 #: steps resolve ``P`` to about 1e-5 relative, see the residuals reported).
 DEFAULT_N_STEPS = 4096
 
-
-def _default_scales() -> np.ndarray:
-    from .stability import DEFAULT_SCALES
-
-    return np.array(DEFAULT_SCALES, dtype=float)
+FloatArray = NDArray[np.float64]
 
 
-def _steady(blade, xi, dxi):
-    """Normalise the steady motion: ``(xi_const or None, xi, dxi)``.
+# --------------------------------------------------------------------------------------
+# The energy function (the paper's)
+# --------------------------------------------------------------------------------------
 
-    A callable ``xi`` that is constant (checked on 16 azimuths, e.g. the periodic motion at
-    ``mu = 0``) is replaced by its constant value, so that the hover case gets the constant,
-    exact solution.
+
+@dataclass(frozen=True)
+class PositivityReport:
+    """Local positivity of ``W`` at ``x = 0`` (condition (d) near the steady motion).
+
+    Attributes
+    ----------
+    psi : numpy.ndarray
+        Azimuths checked, rad.
+    potential_eigenvalues : numpy.ndarray
+        Eigenvalues of the Hessian of ``U`` at ``q_s(psi)``, J/rad^2, shape (n_psi, 3).
+    kinetic_eigenvalues : numpy.ndarray
+        Eigenvalues of ``Omega^2 M(q_s(psi))``, J/(rad/rad)^2, shape (n_psi, 3).
+    positive_definite : bool
+        All eigenvalues > 0: ``W`` has a strict local minimum 0 at ``x = 0`` for every psi.
     """
-    if xi is None:
-        xi = blade.equilibrium()
-    if callable(xi):
-        if not callable(dxi):
-            raise ValueError("a callable steady motion xi(psi) needs its derivative dxi(psi)")
-        grid = TWO_PI * np.arange(16) / 16
-        vals = np.asarray(xi(grid), dtype=float)
-        if vals.shape != (16, 6) or not np.all(np.isfinite(vals)):
-            raise ValueError(f"xi(psi) must return finite states of shape (k, 6), got {vals.shape}")
-        rates = np.asarray(dxi(grid), dtype=float)
-        if np.ptp(vals, axis=0).max() < 1e-12 and np.abs(rates).max() < 1e-12:
-            return vals[0].copy(), vals[0].copy(), None
-        return None, xi, dxi
+
+    psi: FloatArray
+    potential_eigenvalues: FloatArray
+    kinetic_eigenvalues: FloatArray
+    positive_definite: bool
+
+    def __str__(self) -> str:
+        return (f"Hessian of W at x = 0: potential part eigenvalues in "
+                f"[{self.potential_eigenvalues.min():.4g}, {self.potential_eigenvalues.max():.4g}] J/rad^2, "
+                f"kinetic part in [{self.kinetic_eigenvalues.min():.4g}, "
+                f"{self.kinetic_eigenvalues.max():.4g}] J; "
+                + ("positive definite" if self.positive_definite else "NOT positive definite"))
+
+
+@dataclass(frozen=True)
+class EnergyFunction:
+    """The energy of the disturbed motion, the paper's Liapunov function.
+
+    For the disturbed state ``x = z - xi(psi)`` with ``q = q_s + x_q`` (``q_s = xi[:3]``) and
+    the disturbed rates ``x_r = z[3:] - xi[3:]``,
+
+        W(psi, x) = 1/2 Omega^2 x_r^T M(q) x_r + U(psi, q) - U(psi, q_s) - grad_q U(psi, q_s) . x_q,
+
+    in J, with ``M`` the mass matrix (so the first term is the kinetic energy of the disturbance
+    relative to the rotating hub) and ``U = V - T0`` the effective potential of the rotating
+    frame (hinge springs with the control input and pitch-flap coupling, gravity and the
+    centrifugal potential).  The linear term shifts ``U`` so that ``W(psi, 0) = 0`` and
+    ``grad W(psi, 0) = 0`` even when ``q_s`` is not a conservative equilibrium (with
+    aerodynamics the steady motion is held by the air loads, ``grad U(q_s) = Q_aero(q_s)``).
+    In vacuum without dampers and with ``xi`` the equilibrium, ``W`` is Jacobi's integral
+    ``T2 + U`` minus its value at rest, so ``W' = 0`` exactly.
+
+    The derivative along the motion, ``W' = dW/dpsi + grad_x W . f(psi, x)`` with
+    ``f = rhs(psi, xi + x) - xi'``, is computed analytically from generated code::
+
+        grad_xq W = 1/2 Omega^2 x_r^T (dM/dq) x_r + grad U(q) - grad U(q_s),
+        grad_xr W = Omega^2 M(q) x_r,
+        dW/dpsi   = [1/2 Omega^2 x_r^T dM/dq x_r + grad U(q) - grad U(q_s)] . q_s'
+                    - (Hess U(q_s) q_s') . x_q
+                    + theta_c' [dU/dtheta_c(q) - dU/dtheta_c(q_s) - grad dU/dtheta_c(q_s) . x_q],
+
+    where ``q_s' = xi'[:3]`` and ``theta_c'`` is the rate of the control input (the only
+    explicit dependence of ``U`` on psi; ``dU/dtheta_c`` is affine in ``q``, so the last
+    bracket vanishes identically and is kept only for generality).
+
+    Conditions of the theorem (Narkiewicz & Lucjanek, section 2), on ``||x|| < H``:
+
+
+    * (c) continuity and differentiability: ``W`` is analytic in ``x`` and ``psi`` (polynomial in
+      the rates, trigonometric in the angles) for every state.
+
+    * (d) positivity: ``W(psi, 0) = 0``, ``grad W(psi, 0) = 0``; ``W > 0`` for small ``x != 0``
+      iff ``M(q_s)`` (always) and ``Hess U(q_s)`` are positive definite:
+      :meth:`positivity` checks this.  Globally, ``W`` is not positive on every ball: the
+      centrifugal potential is periodic in the angles and has other stationary points, so
+      ``H`` must stay below the first of them (checked numerically by sampling, not here).
+
+    * (e), (f) periodicity of ``W`` and its first derivatives: ``M`` and ``U`` depend on psi only
+      through ``theta_c(psi)`` and ``xi(psi)``, both ``2 pi``-periodic.
+
+    * (g) a property of the sphere extrema of ``W``, checked by the algorithm itself
+      (:func:`rotorlyap.methods.lyapunov.technical_stability`).
+
+    Attributes
+    ----------
+    blade : Blade
+    steady : SteadyMotion
+        The steady motion ``xi`` the disturbance is measured from.
+    """
+
+    blade: Blade
+    steady: SteadyMotion
+    _ps_const: FloatArray | None = field(init=False, repr=False, compare=False, default=None)
+
+    # ------------------------------------------------------------------ helpers
+    def steady_at(self, psi: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """``xi(psi)`` and ``xi'(psi)``, each broadcastable to (..., 6)."""
+        if self.steady.is_constant:
+            return self.steady.state, np.zeros(6)
+        psi = np.asarray(psi, dtype=np.float64)
+        return (np.asarray(self.steady.xi_function(psi), dtype=np.float64),
+                np.asarray(self.steady.dxi_function(psi), dtype=np.float64))
+
+    def _steady_block(self, psi: FloatArray):
+        """xi, xi' as (6, n) or (6, 1) arrays and the potential terms at q_s (rows first)."""
+        xi, dxi = self.steady_at(psi)
+        xi = np.asarray(xi).T.reshape(6, -1)
+        dxi = np.asarray(dxi).T.reshape(6, -1)
+        b = self.blade
+        if self.steady.is_constant and not b.has_cyclic:
+            if self._ps_const is None:
+                object.__setattr__(self, "_ps_const", b.potential_terms(0.0, xi[:3]))
+            ps = self._ps_const
+        else:
+            ps = b.potential_terms(psi, xi[:3])
+        return xi, dxi, ps
+
+    # ------------------------------------------------------------------ public
+    def f(self, psi: ArrayLike, x: ArrayLike) -> FloatArray:
+        """Disturbed right-hand side ``f(psi, x) = h(psi, xi + x) - xi'(psi)``, shape (..., 6)."""
+        b = self.blade
+
+        def kernel(psi_b, xc):
+            xi, dxi, _ = self._steady_block(psi_b)
+            return b.rhs_block(psi_b, xc + xi) - dxi
+
+        return b.blocks(psi, x, kernel, 6)
+
+    def W(self, psi: ArrayLike, x: ArrayLike) -> FloatArray:
+        """Liapunov function ``W(psi, x)``, J, shape ``x.shape[:-1]`` (broadcast with psi)."""
+        b = self.blade
+
+        def kernel(psi_b, xc):
+            xi, _, ps = self._steady_block(psi_b)
+            q = xi[:3] + xc[:3]
+            thc = b.pitch_control(psi_b)
+            kin, U = b.energy_terms(q, xc[3:], thc)
+            return (kin + U - ps[0] - (ps[1:4] * xc[:3]).sum(axis=0))[None]
+
+        return b.blocks(psi, x, kernel, 1)[..., 0]
+
+    def dW(self, psi: ArrayLike, x: ArrayLike) -> FloatArray:
+        """Derivative of ``W`` along the motion, ``W' = dW/dpsi + grad W . f``, J/rad.
+
+        Analytic (generated code), no finite differences; shape ``x.shape[:-1]``.
+        """
+        return self.blade.blocks(psi, x, self._dw_block, 1)[..., 0]
+
+    def _dw_block(self, psi: FloatArray, xc: FloatArray) -> FloatArray:
+        """W' for one block of disturbed states ``xc`` (6, n)."""
+        b = self.blade
+        om2 = b.omega * b.omega
+        xi, dxi, ps = self._steady_block(psi)
+        zc = xc + xi
+        xq, xr = xc[:3], xc[3:]
+        gU_s = ps[1:4]
+        thc = b.pitch_control(psi)
+        T = b.energy_rate_terms(zc, thc, xr)
+        a = b.accelerations(psi, zc, T)
+        dT2 = T[42:45]
+        gU = T[45:48]
+        gq = dT2 + gU - gU_s  # grad_xq W
+        mx = sym3_matvec(T[0:6], xr[0], xr[1], xr[2])  # M x_r
+        dW = (gq[0] * (zc[3] - dxi[0]) + gq[1] * (zc[4] - dxi[1]) + gq[2] * (zc[5] - dxi[2])
+              + om2 * (mx[0] * (a[0] - dxi[3]) + mx[1] * (a[1] - dxi[4]) + mx[2] * (a[2] - dxi[5])))
+        if not self.steady.is_constant:  # explicit psi-dependence through q_s(psi)
+            hq = sym3_matvec(ps[4:10], dxi[0], dxi[1], dxi[2])
+            dW = dW + ((dT2 + gU - gU_s) * dxi[0:3]).sum(axis=0) \
+                - (hq[0] * xq[0] + hq[1] * xq[1] + hq[2] * xq[2])
+        if b.has_cyclic:  # explicit psi-dependence through theta_c(psi)
+            dthc = b.pitch_control_rate(psi)
+            dW = dW + dthc * (T[48] - ps[10] - (ps[11:14] * xq).sum(axis=0))
+        return dW[None]
+
+    def positivity(self, n_psi: int = 36) -> PositivityReport:
+        """Check that the Hessian of ``W`` at ``x = 0`` is positive definite (condition (d)).
+
+        The Hessian is block diagonal: ``Hess U(psi, q_s)`` for the displacements and
+        ``Omega^2 M(q_s)`` for the rates.
+
+        Parameters
+        ----------
+        n_psi : int
+            Number of azimuths on ``[0, 2 pi)``.
+
+        Returns
+        -------
+        PositivityReport
+        """
+        psi = np.linspace(0.0, 2.0 * np.pi, n_psi, endpoint=False)
+        xi, _ = self.steady_at(psi)
+        xi = np.broadcast_to(xi, (n_psi, 6))
+        ps = np.broadcast_to(self.blade.potential_terms(psi, xi[:, :3].T).T, (n_psi, 14))
+        idx = np.array([[0, 1, 2], [1, 3, 4], [2, 4, 5]])
+        H = ps[:, 4:10][:, idx]
+        M = self.blade.mass_matrix(xi) * self.blade.omega ** 2
+        eu = np.linalg.eigvalsh(H)
+        ek = np.linalg.eigvalsh(M)
+        return PositivityReport(psi=psi, potential_eigenvalues=eu, kinetic_eigenvalues=ek,
+                                positive_definite=bool((eu > 0).all() and (ek > 0).all()))
+
+
+def energy_function(blade: Blade, steady=None) -> EnergyFunction:
+    """The paper's Liapunov function (energy of the disturbed motion) about a steady motion.
+
+    Parameters
+    ----------
+    blade : Blade
+        The blade at its advance ratio.
+    steady : SteadyMotion, optional
+        The steady motion, or anything :func:`~rotorlyap.model.steady.as_steady_motion` takes;
+        default the hover equilibrium (the paper's choice).
+
+    Returns
+    -------
+    EnergyFunction
+    """
+    return EnergyFunction(blade, as_steady_motion(steady, blade))
+
+
+def energy_rate_terms(blade: Blade, xi, psi, x) -> dict[str, np.ndarray]:
+    """Split the energy function's ``W'`` into the work rates of the forces on each hinge.
+
+    For a constant steady motion ``xi`` and no cyclic pitch, Lagrange's equations give
+    ``dW/dt = qdot . (Q_damp + Q_aero(z) + F_c(xi))``, where ``F_c(xi)`` is the conservative
+    generalised force at ``xi`` at rest (minus the gradient of the effective potential), so
+    that, per unit of azimuth,
+
+    ``W' = sum_h q'_h [Q_damp,h + (Q_aero,h(psi, z) + F_c,h(xi))]``.
+
+    At the hover equilibrium ``F_c(xi) = -Q_aero(xi)``: the second bracket is the change of
+    the aerodynamic load caused by the disturbance. The sum of all terms equals
+    ``energy_function(blade, xi).dW`` (a unit test checks it).
+
+    Parameters
+    ----------
+    blade : Blade
+        The blade (no cyclic pitch).
+    xi : array_like
+        Constant steady motion, shape (6,).
+    psi : float or numpy.ndarray
+        Azimuth(s), broadcasting with ``x[..., 0]``.
+    x : numpy.ndarray
+        Disturbed states, shape (..., 6).
+
+    Returns
+    -------
+    dict
+        ``"damping"`` and ``"aerodynamic"``: per-hinge work rates (J/rad), shape (..., 3),
+        hinges in the order flap, lag, pitch; ``"total"``: their sum over hinges and kinds,
+        shape (...).
+    """
+    if blade.has_cyclic:
+        raise ValueError("energy_rate_terms needs a blade without cyclic pitch (W then has no explicit psi-dependence)")
     xi = np.asarray(xi, dtype=float)
-    if xi.shape != (6,) or not np.all(np.isfinite(xi)):
-        raise ValueError(f"a constant steady motion xi must be a finite state of shape (6,), got {xi.shape}")
-    return xi, xi, None
+    if xi.shape != (6,):
+        raise ValueError(f"xi must be a constant state of shape (6,), got {xi.shape}")
+    x = np.asarray(x, dtype=float)
+    z = xi + x
+    forces = blade.generalised_forces(psi, z)
+    steady = blade.generalised_forces(0.0, np.concatenate([xi[:3], np.zeros(3)]))["conservative"]
+    rates = z[..., 3:] - xi[3:]
+    damping = rates * forces["damping"]
+    aero = rates * (forces["aerodynamic"] + steady)
+    return {"damping": damping, "aerodynamic": aero, "total": damping.sum(-1) + aero.sum(-1)}
 
 
-def linearisation(blade, xi=None, dxi=None) -> Callable | np.ndarray:
+# --------------------------------------------------------------------------------------
+# Quadratic functions from the periodic Lyapunov equation
+# --------------------------------------------------------------------------------------
+
+
+def linearisation(blade: Blade, steady=None) -> Callable | np.ndarray:
     """The blade linearised about the steady motion: ``J(psi) = dh/dz(psi, xi(psi))``.
 
+    ``steady`` is a :class:`~rotorlyap.model.steady.SteadyMotion` or anything
+    :func:`~rotorlyap.model.steady.as_steady_motion` takes (None: the hover equilibrium).
     Returns a constant ``(6, 6)`` array when the linearisation does not depend on the azimuth
     (constant ``xi``, hover, no cyclic pitch), otherwise a vectorised callable
     ``J(psi (k,)) -> (k, 6, 6)``.
     """
-    const, xi, dxi = _steady(blade, xi, dxi)
-    if const is not None and blade.mu == 0.0 and not blade.has_cyclic:
-        return blade.jacobian(0.0, const)
-    if const is not None:
+    steady = as_steady_motion(steady, blade)
+    if steady.is_constant:
+        const = steady.state
+        if blade.mu == 0.0 and not blade.has_cyclic:
+            return blade.jacobian(0.0, const)
         return lambda psi: blade.jacobian(psi, np.broadcast_to(const, np.shape(psi) + (6,)))
+    xi = steady.xi_function
     return lambda psi: blade.jacobian(psi, xi(psi))
 
 
@@ -146,15 +416,15 @@ def _scaled(J, a: np.ndarray):
 class QuadraticFunction:
     """``W(psi, x) = x^T P(psi) x`` from the periodic Lyapunov equation (module docstring).
 
-    Has the vectorised ``W``, ``dW`` and ``f`` that :func:`rotorlyap.stability.blade_stability`
+    Has the vectorised ``W``, ``dW`` and ``f`` that :func:`rotorlyap.analysis.stability.blade_stability`
     and :func:`rotorlyap.technical_stability` take.
 
     Attributes
     ----------
     blade : Blade
         The blade (advance ratio, controls).
-    xi, dxi : numpy.ndarray or callable
-        The steady motion: a constant state (then ``dxi`` is None) or ``xi(psi)``, ``xi'(psi)``.
+    steady : SteadyMotion
+        The steady motion ``xi`` the disturbance is measured from.
     Q : numpy.ndarray
         The weight in state units, ``(6, 6)``: ``W' = -x^T Q x`` along the linearised motions.
     scales : numpy.ndarray
@@ -166,14 +436,12 @@ class QuadraticFunction:
         A short name for tables and legends.
     """
 
-    blade: object
-    xi: object
-    dxi: object
+    blade: Blade
+    steady: SteadyMotion
     Q: np.ndarray
     scales: np.ndarray
     solution: PeriodicLyapunovSolution
     label: str = "quadratic"
-    _const: np.ndarray | None = field(default=None, repr=False, compare=False)
 
     # ------------------------------------------------------------------ diagnostics
     @property
@@ -238,9 +506,10 @@ class QuadraticFunction:
 
     # ------------------------------------------------------------------ W, W', f
     def _steady(self, psi: np.ndarray):
-        if self._const is not None:
-            return self._const, 0.0
-        return np.asarray(self.xi(psi), dtype=float), np.asarray(self.dxi(psi), dtype=float)
+        if self.steady.is_constant:
+            return self.steady.state, 0.0
+        return (np.asarray(self.steady.xi_function(psi), dtype=float),
+                np.asarray(self.steady.dxi_function(psi), dtype=float))
 
     def f(self, psi, x) -> np.ndarray:
         """Full nonlinear disturbed right-hand side ``h(psi, xi + x) - xi'(psi)``, shape of x."""
@@ -285,7 +554,7 @@ class QuadraticFunction:
 
 
 def _check_scales(scales) -> np.ndarray:
-    a = _default_scales() if scales is None else np.array(scales, dtype=float).reshape(-1)
+    a = np.array(DEFAULT_SCALES if scales is None else scales, dtype=float).reshape(-1)
     if a.shape != (6,) or not np.all(np.isfinite(a)) or np.any(a <= 0):
         raise ValueError(f"scales must be 6 finite numbers > 0 (rad, rad/rad), got {np.asarray(scales).tolist()}")
     return a
@@ -313,12 +582,8 @@ def _solve(J_scaled, Q_scaled: np.ndarray, n_steps: int, where: str) -> Periodic
             return periodic_lyapunov(J_scaled, TWO_PI, Q_scaled, method="magnus6",
                                      n_steps=n_steps, vectorized=True)
         return periodic_lyapunov(J_scaled, TWO_PI, Q_scaled)
-    except ValueError as exc:
-        if "not asymptotically stable" not in str(exc):
-            raise
+    except NotAsymptoticallyStableError as exc:
         if callable(J_scaled):
-            from .floquet import floquet_multipliers
-
             res = floquet_multipliers(J_scaled, TWO_PI, method="magnus6", n_steps=min(n_steps, 1024),
                                       vectorized=True)
             rho = res.spectral_radius
@@ -327,36 +592,37 @@ def _solve(J_scaled, Q_scaled: np.ndarray, n_steps: int, where: str) -> Periodic
             lam = np.linalg.eigvals(J_scaled)
             rate = float(np.max(lam.real))
             rho = float(np.exp(TWO_PI * rate))
-        raise ValueError(
+        raise NotAsymptoticallyStableError(
             f"the blade linearised about {where} is not asymptotically stable: the spectral "
             f"radius of its monodromy matrix is {rho:.6g} >= 1 (largest growth rate "
             f"{rate:+.4g} per rev), so no quadratic Liapunov function x^T P x with W' < 0 "
             "near x = 0 exists, and the steady motion is unstable: no certificate with a small "
-            "bound A is possible"
+            "bound A is possible",
+            spectral_radius=rho, growth_rate=rate,
         ) from exc
 
 
-def quadratic_function(blade, xi=None, Q=None, dxi=None, *, scales=None,
+def quadratic_function(blade: Blade, steady=None, Q=None, *, scales=None,
                        n_steps: int = DEFAULT_N_STEPS, label: str = "quadratic") -> QuadraticFunction:
-    """The quadratic Liapunov function of the blade about the steady motion ``xi``.
+    """The quadratic Liapunov function of the blade about a steady motion.
 
     Parameters
     ----------
     blade : Blade
         The blade at its advance ratio.
-    xi : None, array_like (6,) or callable
-        Steady motion: None for the hover equilibrium (:meth:`Blade.equilibrium`), a constant
-        state, or ``xi(psi) -> (k, 6)`` (e.g. :attr:`rotorlyap.periodic_motion.PeriodicMotion.xi`).
+    steady : SteadyMotion, optional
+        The steady motion, or anything :func:`~rotorlyap.model.steady.as_steady_motion` takes:
+        None for the hover equilibrium (:meth:`Blade.equilibrium`), a constant state, a
+        :class:`~rotorlyap.model.steady.PeriodicMotion` or
+        :class:`~rotorlyap.model.steady.TabulatedMotion`.
     Q : array_like, optional
         Symmetric positive-definite weight ``(6, 6)``, or its 6 diagonal entries, in state
         units (1/rad^2 for angles, 1/(rad/rad)^2 for rates): ``W' = -x^T Q x`` along the
         linearised motions. Default ``diag(1 / a_i**2)``: the identity in scaled coordinates,
         ``W' = -||x||**2``.
-    dxi : callable, optional
-        ``xi'(psi)``, required with a callable ``xi``.
     scales : array_like, optional
         The ``a_i`` of the scaled coordinates (and of the default ``Q``); default
-        :data:`rotorlyap.stability.DEFAULT_SCALES`. Use the scales of the norm the engine
+        :data:`rotorlyap.conventions.DEFAULT_SCALES`. Use the scales of the norm the engine
         works with.
     n_steps : int
         Sixth-order Magnus steps per period for a periodic ``P`` (ignored in hover about the
@@ -370,23 +636,23 @@ def quadratic_function(blade, xi=None, Q=None, dxi=None, *, scales=None,
 
     Raises
     ------
+    rotorlyap.errors.NotAsymptoticallyStableError
+        If the linearised blade is not asymptotically stable (a ``ValueError`` carrying the
+        spectral radius of the monodromy matrix and the growth rate): then no quadratic
+        function exists.
     ValueError
-        If the linearised blade is not asymptotically stable (the message gives the spectral
-        radius of the monodromy matrix and the growth rate): then no quadratic function
-        exists. Also for a bad ``Q``, ``scales`` or ``xi``.
+        For a bad ``Q``, ``scales`` or ``steady``.
     """
     a = _check_scales(scales)
     Q = _check_Q(Q, a)
-    const, xi_, dxi_ = _steady(blade, xi, dxi)
-    J = linearisation(blade, const if const is not None else xi_, dxi_)
-    where = ("the hover equilibrium" if const is not None and blade.mu == 0.0
-             else "the constant state (hover equilibrium reused in forward flight)" if const is not None
+    steady = as_steady_motion(steady, blade)
+    J = linearisation(blade, steady)
+    where = ("the hover equilibrium" if steady.is_constant and blade.mu == 0.0
+             else "the constant state (hover equilibrium reused in forward flight)" if steady.is_constant
              else "the periodic steady motion")
     Qs = Q * a[:, None] * a[None, :]
     sol = _solve(_scaled(J, a), Qs, int(n_steps), where)
-    return QuadraticFunction(blade=blade, xi=xi_ if const is None else const,
-                             dxi=dxi_ if const is None else None, Q=Q, scales=a, solution=sol,
-                             label=label, _const=const)
+    return QuadraticFunction(blade=blade, steady=steady, Q=Q, scales=a, solution=sol, label=label)
 
 
 def certified_radius_estimate(fun: QuadraticFunction, A: float, *, psi=None, n_directions: int = 256,
@@ -394,7 +660,7 @@ def certified_radius_estimate(fun: QuadraticFunction, A: float, *, psi=None, n_d
     """A quick estimate of what the engine will certify with a quadratic function.
 
     Along each of the structured and ``n_directions`` quasi-random directions ``d`` of
-    :func:`rotorlyap.sampling.unit_sphere_points` (scaled coordinates) and at each azimuth of
+    :func:`rotorlyap.methods.sampling.unit_sphere_points` (scaled coordinates) and at each azimuth of
     ``psi``, the radius ``r(d)`` where ``W'(psi, r d)`` first turns positive is bisected on
     ``(0, A]`` (``A`` if it does not); the estimate of step 3 is ``A1 = min r(d)``, and of
     steps 4-5 ``lambda0 = A1 sqrt(min l_min / max l_max)`` (module docstring). Not a
@@ -406,8 +672,6 @@ def certified_radius_estimate(fun: QuadraticFunction, A: float, *, psi=None, n_d
     (float, float)
         ``(A1, lambda0)`` estimates.
     """
-    from .sampling import unit_sphere_points
-
     dirs = unit_sphere_points(6, n_directions, seed)
     psi = np.zeros(1) if psi is None or fun.constant else np.asarray(psi, dtype=float).reshape(-1)
     pp = np.repeat(psi, dirs.shape[0])
@@ -428,7 +692,7 @@ def certified_radius_estimate(fun: QuadraticFunction, A: float, *, psi=None, n_d
     return A1, A1 * fun.lambda0_ratio
 
 
-def optimised_quadratic_function(blade, xi=None, dxi=None, *, A: float = 1.0, scales=None,
+def optimised_quadratic_function(blade: Blade, steady=None, *, A: float = 1.0, scales=None,
                                  n_steps: int = DEFAULT_N_STEPS, n_steps_search: int = 256,
                                  psi_search=None, n_directions: int = 128,
                                  max_evaluations: int = 200,
@@ -448,7 +712,7 @@ def optimised_quadratic_function(blade, xi=None, dxi=None, *, A: float = 1.0, sc
 
     Parameters
     ----------
-    blade, xi, dxi, scales, n_steps, label
+    blade, steady, scales, n_steps, label
         As :func:`quadratic_function`.
     A : float
         The bound of the scaled norm the engine will be asked for.
@@ -468,12 +732,12 @@ def optimised_quadratic_function(blade, xi=None, dxi=None, *, A: float = 1.0, sc
 
     Raises
     ------
-    ValueError
+    rotorlyap.errors.NotAsymptoticallyStableError
         As :func:`quadratic_function` (unstable linearisation).
     """
     a = _check_scales(scales)
-    const, xi_, dxi_ = _steady(blade, xi, dxi)
-    J = linearisation(blade, const if const is not None else xi_, dxi_)
+    steady = as_steady_motion(steady, blade)
+    J = linearisation(blade, steady)
     Js = _scaled(J, a)
     if callable(Js):
         Js = _Cached(Js)
@@ -481,15 +745,14 @@ def optimised_quadratic_function(blade, xi=None, dxi=None, *, A: float = 1.0, sc
 
     def make(w, steps):
         sol = _solve(Js, np.diag(w), steps, "the steady motion")
-        return QuadraticFunction(blade=blade, xi=xi_ if const is None else const,
-                                 dxi=dxi_ if const is None else None, Q=np.diag(w / a**2),
-                                 scales=a, solution=sol, label=label, _const=const)
+        return QuadraticFunction(blade=blade, steady=steady, Q=np.diag(w / a**2),
+                                 scales=a, solution=sol, label=label)
 
     def objective(logw):
         w = np.exp(logw - logw.mean())
         try:
             fun = make(w, n_steps_search)
-        except ValueError:
+        except NotAsymptoticallyStableError:
             return np.inf
         return -np.log(max(certified_radius_estimate(fun, A, psi=psi_search,
                                                      n_directions=n_directions)[1], 1e-300))
@@ -501,5 +764,4 @@ def optimised_quadratic_function(blade, xi=None, dxi=None, *, A: float = 1.0, sc
                                     initial_simplex=np.vstack([np.zeros(6), np.eye(6)])))
     logw = res.x if np.isfinite(res.fun) and res.fun < start else np.zeros(6)
     w = np.exp(logw - logw.mean())
-    return quadratic_function(blade, xi_ if const is None else const, np.diag(w / a**2), dxi_,
-                              scales=a, n_steps=n_steps, label=label)
+    return quadratic_function(blade, steady, np.diag(w / a**2), scales=a, n_steps=n_steps, label=label)

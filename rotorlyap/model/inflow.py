@@ -31,17 +31,14 @@ References
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-if TYPE_CHECKING:  # pragma: no cover
-    from .parameters import BladeParameters
+from ..errors import InflowConvergenceError
+from .parameters import INFLOW_MODELS, BladeParameters
 
 __all__ = [
-    "INFLOW_MODELS",
-    "InflowConvergenceError",
     "induced_inflow",
     "kx_factor",
     "mean_inflow",
@@ -50,18 +47,11 @@ __all__ = [
     "wake_skew",
 ]
 
-#: Names accepted by :func:`kx_factor` (and ``BladeParameters.inflow_model``).
-INFLOW_MODELS: tuple[str, ...] = ("uniform", "glauert", "drees", "pitt-peters", "coleman")
-
 #: Glauert's constant longitudinal inflow gradient [Glauert1926], [Johnson1980].
 GLAUERT_KX = 1.2
 
 
-class InflowConvergenceError(RuntimeError):
-    """The momentum-theory iteration did not converge."""
-
-
-def thrust_coefficient(params: "BladeParameters") -> float:
+def thrust_coefficient(params: BladeParameters) -> float:
     """Rotor thrust coefficient for thrust equal to the helicopter weight.
 
     ``C_T = W / (rho pi R^2 (Omega R)^2)`` with ``W = helicopter_mass * gravity``;
@@ -129,7 +119,7 @@ def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: i
     ------
     ValueError
         For negative or non-finite ``ct`` or ``mu``.
-    InflowConvergenceError
+    rotorlyap.errors.InflowConvergenceError
         If the iteration has not converged after ``maxiter`` steps.
     """
     ct_a = _check_nonneg("ct", ct)
@@ -150,7 +140,8 @@ def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: i
             break
     if not converged:
         raise InflowConvergenceError(
-            f"momentum_inflow did not converge in {maxiter} Newton iterations (ct={ct!r}, mu={mu!r})")
+            f"momentum_inflow did not converge in {maxiter} Newton iterations (ct={ct!r}, mu={mu!r})",
+            residual=float(np.max(np.abs(step) / scale)), tolerance=tol, iterations=maxiter)
     return float(lam) if lam.ndim == 0 else lam
 
 
@@ -234,7 +225,7 @@ def kx_factor(model: str, mu: ArrayLike, lam: ArrayLike) -> float | NDArray[np.f
     return float(kx) if kx.ndim == 0 else kx
 
 
-def mean_inflow(params: "BladeParameters", mu: float) -> float:
+def mean_inflow(params: BladeParameters, mu: float) -> float:
     """Mean induced inflow ratio lambda_0 used by the blade model.
 
     ``params.inflow_ratio`` if it is not None; otherwise momentum theory with
@@ -260,7 +251,7 @@ def mean_inflow(params: "BladeParameters", mu: float) -> float:
     return float(momentum_inflow(thrust_coefficient(params), mu_f))
 
 
-def induced_inflow(params: "BladeParameters", mu: float, r_over_R: ArrayLike, psi: ArrayLike) -> NDArray[np.float64]:
+def induced_inflow(params: BladeParameters, mu: float, r_over_R: ArrayLike, psi: ArrayLike) -> NDArray[np.float64]:
     """Induced inflow ratio over the disc, ``lambda_0 (1 + k_x r cos psi)``.
 
     Parameters

@@ -15,7 +15,7 @@ The six steps, with the scaled norm ``||x|| = sqrt(sum((x_i / a_i)**2))``:
    ``sup W(psi_j, x) < alpha``;
 6. for each azimuth, check ``W'(psi_j, x) <= 0`` on the shell ``lambda0_j < ||x|| <= A``.
 
-Suprema and infima are found by :mod:`rotorlyap.sampling` (dense quasi-random sampling
+Suprema and infima are found by :mod:`rotorlyap.methods.sampling` (dense quasi-random sampling
 refined by local ascent), so a result is exactly as trustworthy as that search: the
 resolution parameters are documented below and their effect is shown in the book.
 """

@@ -35,7 +35,6 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .airfoil import NACA23012, Airfoil, LinearAirfoil
-from .inflow import INFLOW_MODELS
 
 __all__ = [
     "BladeParameters",
@@ -46,6 +45,9 @@ __all__ = [
     "THIN_AIRFOIL_CM_Q",
     "parameter_table",
 ]
+
+INFLOW_MODELS: tuple[str, ...] = ("uniform", "glauert", "drees", "pitt-peters", "coleman")
+"""Inflow models :func:`rotorlyap.model.inflow.kx_factor` knows (``BladeParameters.inflow_model``)."""
 
 
 #: Section centre-of-gravity positions of the paper's three cases, fraction of
@@ -248,7 +250,7 @@ class BladeParameters:
         One of :data:`INFLOW_MODELS`.  Paper: Glauert ("glauert", k_x = 1.2).
     inflow_ratio : float or None
         Mean induced inflow ratio lambda_0 = v_i / (Omega R), >= 0; None: from
-        momentum theory with thrust = weight (:mod:`rotorlyap.inflow`).
+        momentum theory with thrust = weight (:mod:`rotorlyap.model.inflow`).
     collective : float or None
         Collective pitch theta_0 at the pitch hinge, rad; None: trimmed so that
         the hover thrust equals the weight.

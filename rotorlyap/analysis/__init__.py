@@ -1,0 +1,16 @@
+"""The blade in the general method: Liapunov functions, technical stability, Floquet analysis.
+
+* :mod:`~rotorlyap.analysis.functions`: the paper's energy function and quadratic functions
+  from the periodic Lyapunov equation;
+* :mod:`~rotorlyap.analysis.stability`: :func:`blade_stability`, the blade in the engine, in the
+  strict and the practical reading;
+* :mod:`~rotorlyap.analysis.floquet`: Floquet multipliers of the blade about its steady motion,
+  followed over the advance ratio.
+"""
+
+from .floquet import blade_floquet, floquet_sweep
+from .functions import energy_function, optimised_quadratic_function, quadratic_function
+from .stability import blade_stability
+
+__all__ = ["blade_floquet", "blade_stability", "energy_function", "floquet_sweep",
+           "optimised_quadratic_function", "quadratic_function"]

@@ -1,0 +1,111 @@
+"""The blade plugged into the engine: technical stability of its steady motion.
+
+:func:`blade_stability` builds the blade at an advance ratio, the disturbed equations about a
+steady motion (by default the hover equilibrium of the same parameters, reused at every
+advance ratio, as the paper does), a Liapunov function (by default the paper's energy
+function) and runs :func:`rotorlyap.technical_stability` on them, in one of two readings:
+
+``strict``
+    the theorem as stated: suprema and infima over whole spheres of the scaled norm;
+``practical``
+    ``W`` and ``W'`` examined only along a finite set of test disturbances (by default the
+    twelve signed coordinate axes: one hinge angle or one hinge rate disturbed at a time).
+    This is how the paper's figures can show a stable hover with the energy function; it
+    is an indicator, never a certificate.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+from ..conventions import DEFAULT_A, DEFAULT_SCALES, STATE_NAMES
+from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
+from ..model.blade import Blade
+from ..model.parameters import BladeParameters
+from ..model.steady import as_steady_motion, disturbed_rhs
+from .functions import energy_function
+
+__all__ = ["blade_stability"]
+
+
+def blade_stability(
+    params: BladeParameters,
+    mu: float = 0.0,
+    *,
+    lyapunov: Callable | None = None,
+    A: float | None = None,
+    scales=None,
+    n_psi: int = 72,
+    steady=None,
+    test_disturbances=None,
+    **engine_options,
+) -> TechnicalStabilityResult:
+    """Technical stability of the blade's steady motion at advance ratio ``mu``.
+
+    Parameters
+    ----------
+    params : BladeParameters
+        The blade; with ``collective=None`` it is trimmed in hover (thrust = weight) and that
+        collective is kept at every advance ratio, as the paper keeps the hover controls.
+    mu : float
+        Advance ratio (>= 0).
+    lyapunov : callable, optional
+        ``lyapunov(blade, steady)`` (``steady`` a :class:`~rotorlyap.model.steady.SteadyMotion`)
+        returning an object with vectorised ``W(psi, x)`` and ``dW(psi, x)`` (J and J/rad),
+        for example :func:`~rotorlyap.analysis.functions.quadratic_function`. Default: the
+        paper's energy function, :func:`~rotorlyap.analysis.functions.energy_function`.
+    A : float, optional
+        Requested bound of the scaled norm; default :data:`rotorlyap.conventions.DEFAULT_A`.
+    scales : array_like, optional
+        Norm scales ``a_i`` (rad, rad/rad); default :data:`rotorlyap.conventions.DEFAULT_SCALES`.
+    n_psi : int
+        Azimuths of the grid (steps 5 and 6).
+    steady : SteadyMotion, optional
+        Steady motion ``xi``, or anything :func:`~rotorlyap.model.steady.as_steady_motion`
+        takes: None for the hover equilibrium of ``params`` (the paper's choice, reused at
+        every ``mu``), a constant state (6,), a periodic motion.
+    test_disturbances : None or array_like
+        None for the strict reading (whole spheres); an array of directions ``(k, 6)`` in
+        scaled coordinates for the practical reading (e.g.
+        :data:`rotorlyap.conventions.PAPER_TEST_DISTURBANCES`).
+    **engine_options
+        Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ``n_radii``, ...).
+
+    Returns
+    -------
+    TechnicalStabilityResult
+        With ``reading`` "strict" or "practical".
+
+    Raises
+    ------
+    ValueError
+        Bad ``mu``, ``steady``, scales or bound (from the engine).
+    rotorlyap.errors.TrimError
+        A hover trim that does not converge (a ``RuntimeError``).
+    """
+    if not isinstance(params, BladeParameters):
+        raise TypeError(f"params must be a BladeParameters, got {type(params).__name__}")
+    mu = float(mu)
+    if not (np.isfinite(mu) and 0.0 <= mu <= 0.5):
+        raise ValueError(f"mu must be an advance ratio in [0, 0.5], got {mu!r}")
+    if scales is not None and np.size(scales) != 6:
+        raise ValueError(
+            f"scales must hold 6 positive numbers, one per state component {STATE_NAMES}, "
+            f"got {np.size(scales)}"
+        )
+    blade = Blade(params, mu)  # trims the collective in hover if params.collective is None
+    motion = as_steady_motion(steady, Blade(blade.params, 0.0) if steady is None else None)
+    if lyapunov is None:
+        fun = energy_function(blade, motion)
+    else:
+        if not callable(lyapunov):
+            raise TypeError("lyapunov must be callable as lyapunov(blade, steady)")
+        fun = lyapunov(blade, motion)
+    f = getattr(fun, "f", None) or disturbed_rhs(blade, motion)
+    return technical_stability(
+        f, fun.W, DEFAULT_A if A is None else A,
+        scales=DEFAULT_SCALES if scales is None else scales,
+        n_psi=n_psi, dW=fun.dW, test_directions=test_disturbances, **engine_options,
+    )

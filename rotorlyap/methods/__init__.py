@@ -1,0 +1,26 @@
+"""The general method, for any periodic system ``x' = f(psi, x)``: nothing here knows the blade.
+
+* :mod:`~rotorlyap.methods.lyapunov`: the paper's six-step algorithm of technical stability,
+  :func:`~rotorlyap.methods.lyapunov.technical_stability`;
+* :mod:`~rotorlyap.methods.sampling`: points on scaled spheres, batched sup/inf searches;
+* :mod:`~rotorlyap.methods.simulation`: many motions integrated at once;
+* :mod:`~rotorlyap.methods.floquet`: Floquet multipliers of linear periodic systems;
+* :mod:`~rotorlyap.methods.periodic_lyapunov`: the periodic Lyapunov equation;
+* :mod:`~rotorlyap.methods.validation`: certificates measured against simulated motions;
+* :mod:`~rotorlyap.methods.examples`: small periodic systems for the method chapters.
+
+This layer imports nothing from :mod:`rotorlyap.model` or :mod:`rotorlyap.analysis` (a test
+checks it), so it can be used, and read, on its own.
+"""
+
+from .floquet import FloquetResult, floquet_multipliers
+from .lyapunov import TechnicalStabilityResult, orbital_derivative, technical_stability
+from .periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
+from .simulation import SimulationResult, scaled_norm, simulate
+
+__all__ = [
+    "FloquetResult", "floquet_multipliers",
+    "TechnicalStabilityResult", "orbital_derivative", "technical_stability",
+    "PeriodicLyapunovSolution", "periodic_lyapunov",
+    "SimulationResult", "scaled_norm", "simulate",
+]
