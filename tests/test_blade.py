@@ -22,25 +22,16 @@ from rotorlyap.model.trim import hover_trim
 TWO_PI = 2.0 * np.pi
 
 
-@pytest.fixture(scope="module")
-def table_i() -> BladeParameters:
-    return BladeParameters.table_i("forward")
-
-
-@pytest.fixture(scope="module")
-def hover(table_i) -> Blade:
-    return Blade(table_i)
-
-
 def _random_disturbances(rng, n, angle=0.1, rate=0.3):
     return np.column_stack([rng.uniform(-angle, angle, (n, 3)), rng.uniform(-rate, rate, (n, 3))])
 
 
 # ------------------------------------------------------------------ 1. Jacobi's integral
-def test_conservative_blade_conserves_energy_function_jacobi_integral(table_i):
+@pytest.mark.slow
+def test_conservative_blade_conserves_energy_function_jacobi_integral(forward):
     """Vacuum, no dampers, hover, steady motion = that case's equilibrium: W is Jacobi's
     integral T2 + U (minus its rest value), so W' = 0 to round-off at random states."""
-    p = replace(table_i, air_density=0.0, lag_damping=0.0, collective=0.1)
+    p = replace(forward, air_density=0.0, lag_damping=0.0, collective=0.1)
     blade = Blade(p)
     xi = blade.equilibrium()
     E = energy_function(blade, xi)
@@ -132,16 +123,16 @@ def test_hover_coning_tends_to_blade_element_theory():
 
 
 # ------------------------------------------------------------------ 4. periodicity
-def test_hover_rhs_independent_of_azimuth_and_forward_flight_rhs_periodic(table_i):
+def test_hover_rhs_independent_of_azimuth_and_forward_flight_rhs_periodic(forward):
     """In hover the right-hand side does not depend on psi; for mu > 0 (with cyclic pitch)
     it is 2 pi-periodic and does depend on psi."""
     rng = np.random.default_rng(4)
-    hover = Blade(table_i)
+    hover = Blade(forward)
     z = hover.equilibrium() + _random_disturbances(rng, 50)
     psi = rng.uniform(0, TWO_PI, 50)
     f0 = hover.rhs(0.0, z)
     np.testing.assert_allclose(hover.rhs(psi, z), f0, rtol=1e-12, atol=1e-12 * np.abs(f0).max())
-    ff = Blade(replace(table_i, cyclic_cos=0.02, cyclic_sin=-0.03), mu=0.2)
+    ff = Blade(replace(forward, cyclic_cos=0.02, cyclic_sin=-0.03), mu=0.2)
     f1 = ff.rhs(psi, z)
     np.testing.assert_allclose(ff.rhs(psi + TWO_PI, z), f1, rtol=1e-10, atol=1e-10 * np.abs(f1).max())
     np.testing.assert_allclose(ff.rhs(psi - 3 * TWO_PI, z), f1, rtol=1e-9, atol=1e-9 * np.abs(f1).max())
@@ -149,12 +140,12 @@ def test_hover_rhs_independent_of_azimuth_and_forward_flight_rhs_periodic(table_
 
 
 # ------------------------------------------------------------------ signs
-def test_positive_collective_gives_lift_upward_flap_and_thrust(table_i):
+def test_positive_collective_gives_lift_upward_flap_and_thrust(forward):
     """Positive collective (small given inflow): positive thrust, positive aerodynamic flap
     moment, upward coning, positive angle of attack outboard; more collective, more thrust."""
     out = []
     for c in (0.08, 0.11):
-        b = Blade(replace(table_i, collective=c, inflow_ratio=0.02))
+        b = Blade(replace(forward, collective=c, inflow_ratio=0.02))
         z = b.equilibrium()
         Q = b.aerodynamic_forces(0.0, z)
         assert Q[0] > 0 and z[0] > 0
@@ -163,42 +154,42 @@ def test_positive_collective_gives_lift_upward_flap_and_thrust(table_i):
     assert 0 < out[0] < out[1]
 
 
-def test_drag_lags_the_blade_and_lag_damper_opposes_lag_rate(hover):
+def test_drag_lags_the_blade_and_lag_damper_opposes_lag_rate(forward_hover):
     """Aerodynamic drag pushes the blade back (positive lag moment); the lag damper's
     generalised force is -C_zeta Omega zeta' and opposes the lag rate."""
-    z = hover.equilibrium()
-    assert hover.aerodynamic_forces(0.0, z)[1] > 0 and z[1] > 0
+    z = forward_hover.equilibrium()
+    assert forward_hover.aerodynamic_forces(0.0, z)[1] > 0 and z[1] > 0
     zr = z + np.array([0, 0, 0, 0, 0.1, 0])
-    Qd = hover.generalised_forces(0.0, zr)["damping"]
-    assert Qd[1] == pytest.approx(-hover.params.lag_damping * hover.omega * 0.1)
+    Qd = forward_hover.generalised_forces(0.0, zr)["damping"]
+    assert Qd[1] == pytest.approx(-forward_hover.params.lag_damping * forward_hover.omega * 0.1)
     assert Qd[0] == 0 and Qd[2] == 0
 
 
-def test_advancing_side_at_90_degrees(table_i):
+def test_advancing_side_at_90_degrees(forward):
     """psi = 90 deg is the advancing side: the relative air speed at the tip is larger there
     than at 270 deg by 2 mu Omega R (rigid blade at rest in the hub frame), and the retreating
     blade root sees reverse flow at mu = 0.25."""
     mu = 0.25
-    b = Blade(table_i, mu=mu)
+    b = Blade(forward, mu=mu)
     z = np.zeros(6)
-    VR = table_i.rotor_speed * table_i.radius
+    VR = forward.rotor_speed * forward.radius
 
     def speed(psi):
         return float(np.hypot(*b.relative_wind(psi, z)[-1]))
 
     r_tip = b.r[-1]
-    assert speed(np.pi / 2) == pytest.approx(table_i.rotor_speed * r_tip + mu * VR, rel=1e-3)
-    assert speed(3 * np.pi / 2) == pytest.approx(table_i.rotor_speed * r_tip - mu * VR, rel=1e-3)
+    assert speed(np.pi / 2) == pytest.approx(forward.rotor_speed * r_tip + mu * VR, rel=1e-3)
+    assert speed(3 * np.pi / 2) == pytest.approx(forward.rotor_speed * r_tip - mu * VR, rel=1e-3)
     alpha = b.angle_of_attack(3 * np.pi / 2, z)
     assert abs(alpha[0]) > np.pi / 2  # reverse flow at the root on the retreating side
     assert np.all(np.abs(b.angle_of_attack(np.pi / 2, z)) < 0.3)
 
 
 # ------------------------------------------------------------------ energy function
-def test_energy_function_vanishes_with_zero_gradient_at_steady_motion(hover):
+def test_energy_function_vanishes_with_zero_gradient_at_steady_motion(forward_hover):
     """W(psi, 0) = 0 and grad W(psi, 0) = 0; the Hessian is positive definite at the Table I
-    hover equilibrium (condition (d) locally)."""
-    E = energy_function(hover)
+    forward_hover equilibrium (condition (d) locally)."""
+    E = energy_function(forward_hover)
     psi = np.linspace(0, TWO_PI, 7)
     assert np.all(np.abs(E.W(psi, np.zeros((7, 6)))) < 1e-9)
     h = 1e-5
@@ -212,10 +203,10 @@ def test_energy_function_vanishes_with_zero_gradient_at_steady_motion(hover):
 
 
 @pytest.mark.parametrize("case", ["constant", "cyclic", "periodic_xi"])
-def test_analytic_dW_equals_finite_difference_orbital_derivative(table_i, case):
+def test_analytic_dW_equals_finite_difference_orbital_derivative(forward, case):
     """The analytic W' = dW/dpsi + grad W . f equals a central difference of W along (1, f)
     in forward flight with aerodynamics, with cyclic pitch and for a psi-periodic xi."""
-    p = table_i if case == "constant" else replace(table_i, cyclic_cos=0.02, cyclic_sin=-0.03)
+    p = forward if case == "constant" else replace(forward, cyclic_cos=0.02, cyclic_sin=-0.03)
     b = Blade(p, mu=0.2)
     xi0 = b.equilibrium()
     if case == "periodic_xi":
@@ -235,78 +226,78 @@ def test_analytic_dW_equals_finite_difference_orbital_derivative(table_i, case):
     np.testing.assert_allclose(E.dW(psi, x), ref, rtol=1e-6, atol=1e-6 * np.abs(ref).max())
 
 
-def test_vectorised_shapes_and_scalar_psi(hover):
+def test_vectorised_shapes_and_scalar_psi(forward_hover):
     """Methods broadcast psi against the leading axes of z and x."""
     rng = np.random.default_rng(3)
-    z = hover.equilibrium() + _random_disturbances(rng, 12).reshape(3, 4, 6)
+    z = forward_hover.equilibrium() + _random_disturbances(rng, 12).reshape(3, 4, 6)
     psi = rng.uniform(0, TWO_PI, 4)
-    f = hover.rhs(psi, z)
+    f = forward_hover.rhs(psi, z)
     assert f.shape == (3, 4, 6)
-    np.testing.assert_allclose(f[1, 2], hover.rhs(psi[2], z[1, 2]), rtol=1e-13, atol=1e-13)
-    assert hover.jacobian(0.0, z).shape == (3, 4, 6, 6)
-    assert hover.kinetic_energy(psi, z).shape == (3, 4)
-    assert hover.potential_energy(0.0, z).shape == (3, 4)
-    E = energy_function(hover)
-    x = z - hover.equilibrium()
+    np.testing.assert_allclose(f[1, 2], forward_hover.rhs(psi[2], z[1, 2]), rtol=1e-13, atol=1e-13)
+    assert forward_hover.jacobian(0.0, z).shape == (3, 4, 6, 6)
+    assert forward_hover.kinetic_energy(psi, z).shape == (3, 4)
+    assert forward_hover.potential_energy(0.0, z).shape == (3, 4)
+    E = energy_function(forward_hover)
+    x = z - forward_hover.equilibrium()
     assert E.W(psi, x).shape == (3, 4) and E.dW(0.0, x).shape == (3, 4)
     np.testing.assert_allclose(E.dW(psi, x)[2], E.dW(psi, x[2]), rtol=1e-13)
 
 
-def test_kinetic_energy_split_and_effective_potential(hover):
+def test_kinetic_energy_split_and_effective_potential(forward_hover):
     """T = T2 + T1 + T0 with T2 = 1/2 Omega^2 q'^T M q' and U = V - T0."""
     rng = np.random.default_rng(5)
-    z = hover.equilibrium() + _random_disturbances(rng, 5)
-    T2, T1, T0 = np.moveaxis(hover.kinetic_energy_parts(0.0, z), -1, 0)
-    M = hover.mass_matrix(z)
+    z = forward_hover.equilibrium() + _random_disturbances(rng, 5)
+    T2, T1, T0 = np.moveaxis(forward_hover.kinetic_energy_parts(0.0, z), -1, 0)
+    M = forward_hover.mass_matrix(z)
     qp = z[:, 3:]
-    np.testing.assert_allclose(T2, 0.5 * hover.omega**2 * np.einsum("ni,nij,nj->n", qp, M, qp),
+    np.testing.assert_allclose(T2, 0.5 * forward_hover.omega**2 * np.einsum("ni,nij,nj->n", qp, M, qp),
                                rtol=1e-12)
-    np.testing.assert_allclose(hover.kinetic_energy(0.0, z), T2 + T1 + T0, rtol=1e-14)
-    np.testing.assert_allclose(hover.effective_potential(0.0, z),
-                               hover.potential_energy(0.0, z) - T0, rtol=1e-12)
+    np.testing.assert_allclose(forward_hover.kinetic_energy(0.0, z), T2 + T1 + T0, rtol=1e-14)
+    np.testing.assert_allclose(forward_hover.effective_potential(0.0, z),
+                               forward_hover.potential_energy(0.0, z) - T0, rtol=1e-12)
 
 
 # ------------------------------------------------------------------ mass properties, trim
-def test_mass_properties_of_uniform_blade(table_i):
+def test_mass_properties_of_uniform_blade(forward):
     """Mass, first moment and inertia about the pitch hinge from the spanwise quadrature equal
     the closed forms of a uniform blade with a chordwise C.G. offset."""
-    mp = mass_properties(table_i)
-    mpl, R, R1 = table_i.mass_per_length, table_i.radius, table_i.blade_length
-    a = R - R1 - table_i.pitch_hinge_radius  # root of the blade from the pitch hinge
-    b = R - table_i.pitch_hinge_radius
+    mp = mass_properties(forward)
+    mpl, R, R1 = forward.mass_per_length, forward.radius, forward.blade_length
+    a = R - R1 - forward.pitch_hinge_radius  # root of the blade from the pitch hinge
+    b = R - forward.pitch_hinge_radius
     m = mpl * R1
-    y = (table_i.pitch_axis - table_i.cg_position) * table_i.chord
+    y = (forward.pitch_axis - forward.cg_position) * forward.chord
     assert mp.mass == pytest.approx(m, rel=1e-13)
     np.testing.assert_allclose(mp.first_moment, [mpl * (b**2 - a**2) / 2, m * y, 0.0], atol=1e-10)
     Ix2 = mpl * (b**3 - a**3) / 3
-    k2 = (table_i.pitch_radius_of_gyration * table_i.chord) ** 2
+    k2 = (forward.pitch_radius_of_gyration * forward.chord) ** 2
     np.testing.assert_allclose(np.diag(mp.inertia), [m * (y * y + k2), Ix2, Ix2 + m * (y * y + k2)],
                                rtol=1e-12)
     assert mp.inertia[0, 1] == pytest.approx(-mpl * (b**2 - a**2) / 2 * y, rel=1e-12)
 
 
-def test_hover_trim_gives_thrust_equal_weight(table_i, hover):
-    """The trimmed collective gives rotor thrust = weight at the hover equilibrium."""
-    tr = hover_trim(table_i)
-    assert tr.thrust == pytest.approx(table_i.weight, rel=1e-9)
-    assert hover.params.collective == tr.collective
-    np.testing.assert_allclose(hover.equilibrium(), tr.equilibrium)
-    np.testing.assert_allclose(hover.rhs(0.0, tr.equilibrium)[3:], 0.0, atol=1e-9)
-    assert hover.rotor_thrust(0.0, tr.equilibrium) == pytest.approx(table_i.weight, rel=1e-9)
+def test_hover_trim_gives_thrust_equal_weight(forward, forward_hover):
+    """The trimmed collective gives rotor thrust = weight at the forward_hover equilibrium."""
+    tr = hover_trim(forward)
+    assert tr.thrust == pytest.approx(forward.weight, rel=1e-9)
+    assert forward_hover.params.collective == tr.collective
+    np.testing.assert_allclose(forward_hover.equilibrium(), tr.equilibrium)
+    np.testing.assert_allclose(forward_hover.rhs(0.0, tr.equilibrium)[3:], 0.0, atol=1e-9)
+    assert forward_hover.rotor_thrust(0.0, tr.equilibrium) == pytest.approx(forward.weight, rel=1e-9)
 
 
-def test_trim_and_equilibrium_errors_are_clear(table_i):
+def test_trim_and_equilibrium_errors_are_clear(forward):
     """Trim in vacuum raises TrimError; a bad mu raises ValueError."""
     with pytest.raises(TrimError, match="vacuum"):
-        hover_trim(replace(table_i, air_density=0.0))
+        hover_trim(replace(forward, air_density=0.0))
     with pytest.raises(ValueError, match="mu"):
-        Blade(table_i, mu=-0.1)
+        Blade(forward, mu=-0.1)
 
 
-def test_lift_at_aerodynamic_centre_ahead_of_pitch_axis_pitches_nose_up(table_i):
+def test_lift_at_aerodynamic_centre_ahead_of_pitch_axis_pitches_nose_up(forward):
     """Moving the aerodynamic centre from 0.05 c behind to 0.05 c ahead of the pitch axis
     (cm = 0) adds a nose-up pitch moment equal to the blade lift times 0.1 c."""
-    base = replace(table_i, airfoil=LinearAirfoil(5.7, 0.0), collective=0.1, inflow_ratio=0.02,
+    base = replace(forward, airfoil=LinearAirfoil(5.7, 0.0), collective=0.1, inflow_ratio=0.02,
                    cg_position=0.25)
     z = np.array([0.05, 0.0, 0.1, 0.0, 0.0, 0.0])
     Q = {}
@@ -339,12 +330,12 @@ def test_pitch_damping_couple_is_the_thin_airfoil_value_pi_rho_b3_U_q():
     np.testing.assert_allclose(q_damped[:2], q_static[:2], atol=1e-12 * abs(expected))
 
 
-def test_pitch_damping_leaves_the_equilibrium_and_only_dissipates(table_i):
+def test_pitch_damping_leaves_the_equilibrium_and_only_dissipates(forward):
     """The couple acts on the pitch rate relative to the rotating hub, which is zero at rest:
     the hover equilibrium is the same with and without it; in motion it only removes energy,
     so W' (energy about the equilibrium) is lower with it at every disturbed state."""
-    static = replace(table_i, cm_pitch_rate=0.0)
-    b1, b0 = Blade(table_i), Blade(static)
+    static = replace(forward, cm_pitch_rate=0.0)
+    b1, b0 = Blade(forward), Blade(static)
     np.testing.assert_allclose(b1.equilibrium(), b0.equilibrium(), atol=1e-12)
     x = np.random.default_rng(5).normal(size=(400, 6)) * np.array([0.02, 0.02, 0.01, 0.02, 0.005, 0.05])
     d1 = energy_function(b1).dW(0.0, x)

@@ -8,11 +8,6 @@ from rotorlyap.analysis.floquet import blade_floquet, floquet_sweep
 from rotorlyap.model.steady import periodic_motion, tabulate_motion
 
 
-@pytest.fixture(scope="module")
-def forward():
-    return BladeParameters.table_i("forward")
-
-
 def _match(a, b):
     """Largest distance between the multisets a and b (nearest-neighbour matching)."""
     b = list(b)

@@ -180,6 +180,7 @@ def _sympy_values(exprs, subs):
 
 @pytest.mark.parametrize("name", ["rhs_terms", "rhs_dw_terms", "w_terms", "energies",
                                   "potential_terms", "kinematics", "point_velocity"])
+@pytest.mark.slow
 def test_generated_code_equals_sympy_substitution(name):
     """Every generated function equals direct sympy evaluation (substitution) of the
     derivation's expressions at random states and parameters."""
@@ -208,6 +209,7 @@ def test_generated_code_broadcasts_over_leading_axes():
     np.testing.assert_allclose(out[:, 2, 3], one, rtol=1e-14, atol=1e-14)
 
 
+@pytest.mark.slow
 def test_cached_code_is_current_and_equals_fresh_derivation():
     """The cached generated file records the current derivation hash and equals a fresh
     derivation byte for byte (deterministic output)."""

@@ -25,6 +25,7 @@ import numpy as np
 import pytest
 from scipy.linalg import eigvalsh_tridiagonal, expm
 
+from rotorlyap.methods.examples import mathieu_matrix
 from rotorlyap.methods.floquet import (
     METHODS,
     FloquetResult,
@@ -39,20 +40,10 @@ from rotorlyap.methods.floquet import (
 
 
 def mathieu(a: float, q: float, c: float = 0.0):
-    """A(t) of y'' + c y' + (a - 2 q cos 2t) y = 0 (scalar t) and its vectorised form."""
-
-    def A(t):
-        return np.array([[0.0, 1.0], [-(a - 2.0 * q * np.cos(2.0 * t)), -c]])
-
-    def Av(t):
-        t = np.asarray(t, dtype=float)
-        out = np.zeros(t.shape + (2, 2))
-        out[..., 0, 1] = 1.0
-        out[..., 1, 0] = -(a - 2.0 * q * np.cos(2.0 * t))
-        out[..., 1, 1] = -c
-        return out
-
-    return A, Av
+    """A(t) of y'' + c y' + (a - 2 q cos 2t) y = 0, called with a scalar t and vectorised
+    (one function, rotorlyap.methods.examples.mathieu_matrix, serves both)."""
+    A = mathieu_matrix(a, q, c)
+    return A, A
 
 
 def hill(family: str, q: float, size: int = 60) -> np.ndarray:

@@ -18,28 +18,22 @@ from rotorlyap.model.inflow import (
     wake_skew,
 )
 from rotorlyap.errors import InflowConvergenceError
-from rotorlyap.model.parameters import BladeParameters
 
 CT = 0.0053
 
 
-@pytest.fixture(scope="module")
-def p() -> BladeParameters:
-    return BladeParameters.table_i("forward")
-
-
-def test_thrust_coefficient_is_weight_over_rho_pi_R2_tip_speed_squared(p):
+def test_thrust_coefficient_is_weight_over_rho_pi_R2_tip_speed_squared(forward):
     """C_T = m g / (rho pi R^2 (Omega R)^2) = 0.00534 for the W-3-like data."""
     expected = 6400 * 9.80665 / (1.225 * math.pi * 7.85**2 * (28.35 * 7.85) ** 2)
-    assert thrust_coefficient(p) == pytest.approx(expected, rel=1e-14)
-    assert thrust_coefficient(p) == pytest.approx(0.005344, abs=1e-6)
+    assert thrust_coefficient(forward) == pytest.approx(expected, rel=1e-14)
+    assert thrust_coefficient(forward) == pytest.approx(0.005344, abs=1e-6)
 
 
-def test_thrust_coefficient_in_vacuum_is_an_error(p):
+def test_thrust_coefficient_in_vacuum_is_an_error(forward):
     with pytest.raises(ValueError, match=r"air_density must be > 0, got 0.0 \(vacuum\)"):
-        thrust_coefficient(dataclasses.replace(p, air_density=0.0))
+        thrust_coefficient(dataclasses.replace(forward, air_density=0.0))
     with pytest.raises(ValueError, match="weight"):
-        thrust_coefficient(dataclasses.replace(p, gravity=0.0))
+        thrust_coefficient(dataclasses.replace(forward, gravity=0.0))
 
 
 def test_hover_inflow_is_sqrt_ct_over_2():
@@ -130,35 +124,35 @@ def test_unknown_inflow_model_lists_allowed_names():
         kx_factor("mangler", 0.1, 0.03)
 
 
-def test_induced_inflow_is_larger_at_the_rear_of_the_disc(p):
+def test_induced_inflow_is_larger_at_the_rear_of_the_disc(forward):
     """psi = 0 points downstream: lambda_i(r, 0) > lambda_0 > lambda_i(r, pi) (Glauert, k_x = 1.2)."""
     mu = 0.15
-    lam0 = momentum_inflow(thrust_coefficient(p), mu)
-    rear, side, front = induced_inflow(p, mu, 1.0, np.array([0.0, math.pi / 2, math.pi]))
+    lam0 = momentum_inflow(thrust_coefficient(forward), mu)
+    rear, side, front = induced_inflow(forward, mu, 1.0, np.array([0.0, math.pi / 2, math.pi]))
     assert rear == pytest.approx(lam0 * 2.2)
     assert side == pytest.approx(lam0)
     assert front == pytest.approx(lam0 * (1 - 1.2))
 
 
-def test_induced_inflow_broadcasts_and_averages_to_lambda0(p):
+def test_induced_inflow_broadcasts_and_averages_to_lambda0(forward):
     r = np.linspace(0.2, 1.0, 5)[:, None]
     psi = np.linspace(0, 2 * math.pi, 64, endpoint=False)[None, :]
-    lam = induced_inflow(p, 0.2, r, psi)
+    lam = induced_inflow(forward, 0.2, r, psi)
     assert lam.shape == (5, 64)
-    np.testing.assert_allclose(lam.mean(axis=1), mean_inflow(p, 0.2), rtol=1e-12)
+    np.testing.assert_allclose(lam.mean(axis=1), mean_inflow(forward, 0.2), rtol=1e-12)
 
 
-def test_induced_inflow_in_hover_does_not_depend_on_azimuth(p):
-    lam = induced_inflow(p, 0.0, 0.7, np.linspace(0, 2 * math.pi, 9))
-    np.testing.assert_allclose(lam, math.sqrt(thrust_coefficient(p) / 2), rtol=1e-14)
+def test_induced_inflow_in_hover_does_not_depend_on_azimuth(forward):
+    lam = induced_inflow(forward, 0.0, 0.7, np.linspace(0, 2 * math.pi, 9))
+    np.testing.assert_allclose(lam, math.sqrt(thrust_coefficient(forward) / 2), rtol=1e-14)
 
 
-def test_inflow_ratio_override_and_uniform_model(p):
-    q = dataclasses.replace(p, inflow_ratio=0.04, inflow_model="uniform")
+def test_inflow_ratio_override_and_uniform_model(forward):
+    q = dataclasses.replace(forward, inflow_ratio=0.04, inflow_model="uniform")
     lam = induced_inflow(q, 0.25, np.array([0.3, 1.0]), np.array([[0.0], [math.pi]]))
     np.testing.assert_array_equal(lam, 0.04)
 
 
-def test_induced_inflow_in_vacuum_is_zero(p):
-    q = dataclasses.replace(p, air_density=0.0)
+def test_induced_inflow_in_vacuum_is_zero(forward):
+    q = dataclasses.replace(forward, air_density=0.0)
     assert np.all(induced_inflow(q, 0.1, 1.0, np.array([0.0, 1.0])) == 0.0)

@@ -143,6 +143,7 @@ def test_same_call_gives_the_same_numbers():
     assert a.A == b.A and a.alpha == b.alpha
 
 
+@pytest.mark.slow
 def test_trajectories_started_inside_lambda0_stay_inside_A():
     """The theorem's conclusion, by simulation of the toy oscillator.
 

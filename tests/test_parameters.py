@@ -18,23 +18,18 @@ from rotorlyap.model.parameters import (
 )
 
 
-@pytest.fixture(scope="module")
-def p() -> BladeParameters:
-    return BladeParameters.table_i("forward")
-
-
-def test_table_i_values_are_reproduced(p):
+def test_table_i_values_are_reproduced(forward):
     """Every Table I datum (READING.md, realigned) is the table_i value, in SI units."""
-    assert p.radius == 7.85
-    assert p.blade_length == 6.772
-    assert p.hub_elements == (0.01, -0.005, 0.02, 0.03, 0.0)
-    assert p.chord == 0.4
-    assert p.pitch_flap_coupling == -0.4
-    assert p.rotor_speed == 28.35
-    assert p.twist == 0.0
-    assert p.pitch_stiffness == 6304.0  # 6.304 kNm/rad
-    assert p.lag_damping == 10000.0  # 10.0 kNms/rad
-    assert p.aerodynamic_centre == 0.235
+    assert forward.radius == 7.85
+    assert forward.blade_length == 6.772
+    assert forward.hub_elements == (0.01, -0.005, 0.02, 0.03, 0.0)
+    assert forward.chord == 0.4
+    assert forward.pitch_flap_coupling == -0.4
+    assert forward.rotor_speed == 28.35
+    assert forward.twist == 0.0
+    assert forward.pitch_stiffness == 6304.0  # 6.304 kNm/rad
+    assert forward.lag_damping == 10000.0  # 10.0 kNms/rad
+    assert forward.aerodynamic_centre == 0.235
 
 
 @pytest.mark.parametrize("cg, x", [("forward", 0.215), ("neutral", 0.235), ("backward", 0.255)])
@@ -47,8 +42,8 @@ def test_table_i_three_cg_positions_are_0p02c_about_the_aerodynamic_centre(cg, x
     assert CG_POSITIONS[cg] == x
 
 
-def test_default_construction_is_the_forward_cg_case(p):
-    assert BladeParameters() == p
+def test_default_construction_is_the_forward_cg_case(forward):
+    assert BladeParameters() == forward
 
 
 def test_table_i_unknown_cg_name_is_rejected_listing_allowed_names():
@@ -61,52 +56,52 @@ def test_table_i_accepts_overrides():
     assert q.air_density == 0.0 and q.gravity == 0.0 and q.cg_position == 0.255
 
 
-def test_lock_number_is_about_8(p):
+def test_lock_number_is_about_8(forward):
     """gamma = rho a c R^4 / I_beta is close to 8, a typical articulated-rotor value (the design choice)."""
-    assert 7.8 < p.lock_number < 8.3
+    assert 7.8 < forward.lock_number < 8.3
 
 
-def test_flap_inertia_equals_closed_form_of_the_uniform_blade(p):
+def test_flap_inertia_equals_closed_form_of_the_uniform_blade(forward):
     """I_beta = m/3 [(R - e)^3 - (R - R1 - e)^3] for a uniform blade from R - R1 to R, hinge at e = e1 R1."""
     e = 0.01 * 6.772
-    closed = p.mass_per_length / 3.0 * ((7.85 - e) ** 3 - (7.85 - 6.772 - e) ** 3)
-    assert p.flap_inertia == pytest.approx(closed, rel=1e-12)
-    assert p.blade_mass == pytest.approx(p.mass_per_length * 6.772, rel=1e-12)
+    closed = forward.mass_per_length / 3.0 * ((7.85 - e) ** 3 - (7.85 - 6.772 - e) ** 3)
+    assert forward.flap_inertia == pytest.approx(closed, rel=1e-12)
+    assert forward.blade_mass == pytest.approx(forward.mass_per_length * 6.772, rel=1e-12)
 
 
-def test_lock_number_uses_the_airfoil_lift_slope(p):
-    q = dataclasses.replace(p, airfoil=LinearAirfoil(lift_slope=2 * math.pi))
-    assert q.lock_number / p.lock_number == pytest.approx(2 * math.pi / TABLE_I_AIRFOIL.lift_slope)
+def test_lock_number_uses_the_airfoil_lift_slope(forward):
+    q = dataclasses.replace(forward, airfoil=LinearAirfoil(lift_slope=2 * math.pi))
+    assert q.lock_number / forward.lock_number == pytest.approx(2 * math.pi / TABLE_I_AIRFOIL.lift_slope)
 
 
-def test_hub_element_lengths_and_root_cutout_in_metres(p):
-    assert p.hub_element_lengths == pytest.approx((0.06772, -0.03386, 0.13544, 0.20316, 0.0))
-    assert p.root_cutout == pytest.approx(1.078)
-    assert p.root_r_over_R == pytest.approx(1.078 / 7.85)
-    assert p.flap_hinge_offset == pytest.approx(0.06772)
-    assert p.pitch_hinge_radius == pytest.approx(0.06 * 6.772)
-    assert p.tip_speed == pytest.approx(28.35 * 7.85)
+def test_hub_element_lengths_and_root_cutout_in_metres(forward):
+    assert forward.hub_element_lengths == pytest.approx((0.06772, -0.03386, 0.13544, 0.20316, 0.0))
+    assert forward.root_cutout == pytest.approx(1.078)
+    assert forward.root_r_over_R == pytest.approx(1.078 / 7.85)
+    assert forward.flap_hinge_offset == pytest.approx(0.06772)
+    assert forward.pitch_hinge_radius == pytest.approx(0.06 * 6.772)
+    assert forward.tip_speed == pytest.approx(28.35 * 7.85)
 
 
-def test_solidity_and_weight(p):
-    assert p.solidity == pytest.approx(4 * 0.4 / (math.pi * 7.85))
-    assert p.weight == pytest.approx(6400 * 9.80665)
+def test_solidity_and_weight(forward):
+    assert forward.solidity == pytest.approx(4 * 0.4 / (math.pi * 7.85))
+    assert forward.weight == pytest.approx(6400 * 9.80665)
 
 
-def test_stations_integrate_over_the_aerodynamic_span(p):
+def test_stations_integrate_over_the_aerodynamic_span(forward):
     """Gauss-Legendre weights sum to R1/R and integrate r^3 exactly."""
-    r, w = p.stations()
+    r, w = forward.stations()
     assert r.shape == w.shape == (12,)
-    assert np.all((r > p.root_r_over_R) & (r < 1.0))
+    assert np.all((r > forward.root_r_over_R) & (r < 1.0))
     assert w.sum() == pytest.approx(6.772 / 7.85)
-    a = p.root_r_over_R
+    a = forward.root_r_over_R
     assert np.sum(w * r**3) == pytest.approx((1 - a**4) / 4)
 
 
-def test_spanwise_profiles_accept_floats_and_callables(p):
+def test_spanwise_profiles_accept_floats_and_callables(forward):
     x = np.array([[0.2, 0.5], [0.8, 1.0]])
-    assert p.chord_at(x).shape == (2, 2) and np.all(p.chord_at(x) == 0.4)
-    q = dataclasses.replace(p, chord=lambda r: 0.5 - 0.1 * r, mass_per_length=lambda r: 10.0 + 0 * r)
+    assert forward.chord_at(x).shape == (2, 2) and np.all(forward.chord_at(x) == 0.4)
+    q = dataclasses.replace(forward, chord=lambda r: 0.5 - 0.1 * r, mass_per_length=lambda r: 10.0 + 0 * r)
     assert q.chord_at(1.0) == pytest.approx(0.4)
     assert q.chord_at(x).shape == (2, 2)
     assert q.blade_mass == pytest.approx(67.72)
@@ -115,17 +110,17 @@ def test_spanwise_profiles_accept_floats_and_callables(p):
     assert np.all(q.mass_per_length_at(x) == 10.0)
 
 
-def test_replace_gives_a_variant_and_revalidates(p):
-    q = dataclasses.replace(p, air_density=1.0)
-    assert q.air_density == 1.0 and p.air_density == 1.225
+def test_replace_gives_a_variant_and_revalidates(forward):
+    q = dataclasses.replace(forward, air_density=1.0)
+    assert q.air_density == 1.0 and forward.air_density == 1.225
     with pytest.raises(ValueError, match="air_density must be >= 0, got -1.0"):
-        dataclasses.replace(p, air_density=-1.0)
+        dataclasses.replace(forward, air_density=-1.0)
 
 
-def test_parameters_are_frozen_and_hashable(p):
+def test_parameters_are_frozen_and_hashable(forward):
     with pytest.raises(dataclasses.FrozenInstanceError):
-        p.radius = 8.0  # type: ignore[misc]
-    assert hash(p) == hash(BladeParameters.table_i("forward"))
+        forward.radius = 8.0  # type: ignore[misc]
+    assert hash(forward) == hash(BladeParameters.table_i("forward"))
 
 
 def test_ints_are_normalised_to_floats_and_lists_to_tuples():
@@ -139,15 +134,15 @@ def test_vacuum_and_no_gravity_are_allowed():
     assert q.lock_number == 0.0
 
 
-def test_default_airfoil_is_naca23012_with_table_i_aerodynamic_centre(p):
-    assert p.airfoil.name == "NACA 23012"
-    assert p.airfoil.aerodynamic_centre == 0.235
-    assert p.airfoil.lift_slope == NACA23012.lift_slope
+def test_default_airfoil_is_naca23012_with_table_i_aerodynamic_centre(forward):
+    assert forward.airfoil.name == "NACA 23012"
+    assert forward.airfoil.aerodynamic_centre == 0.235
+    assert forward.airfoil.lift_slope == NACA23012.lift_slope
 
 
-def test_parameter_table_lists_every_field_with_unit_and_source(p):
-    rows = parameter_table(p)
-    names = [f.name for f in dataclasses.fields(p)]
+def test_parameter_table_lists_every_field_with_unit_and_source(forward):
+    rows = parameter_table(forward)
+    names = [f.name for f in dataclasses.fields(forward)]
     assert [r[0] for r in rows] == names
     assert set(FIELD_INFO) == set(names)
     for name, value, unit, source in rows:

@@ -11,6 +11,7 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_lyapunov
 
+from rotorlyap.methods.examples import mathieu_matrix
 from rotorlyap.methods.periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
 
 A_CONST = np.array([[0.0, 1.0, 0.0], [-4.0, -0.4, 0.5], [0.3, 0.0, -1.0]])
@@ -18,15 +19,7 @@ Q3 = np.diag([1.0, 2.0, 0.5])
 
 
 def damped_mathieu(a=2.5, q=0.5, c=0.3):
-    def A(t):
-        t = np.asarray(t, dtype=float)
-        out = np.zeros(t.shape + (2, 2))
-        out[..., 0, 1] = 1.0
-        out[..., 1, 0] = -(a - 2.0 * q * np.cos(2.0 * t))
-        out[..., 1, 1] = -c
-        return out
-
-    return A  # works for a float t (2, 2) and, vectorised, for t of shape (k,)
+    return mathieu_matrix(a, q, c)  # works for a float t (2, 2) and, vectorised, for t of shape (k,)
 
 
 def coupled_periodic(n=4, seed=3):

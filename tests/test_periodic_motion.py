@@ -9,24 +9,19 @@ from rotorlyap.errors import PeriodicMotionError
 from rotorlyap.model.steady import periodic_motion
 
 
-@pytest.fixture(scope="module")
-def params():
-    return BladeParameters.table_i(cg="forward")
-
-
-def test_hover_periodic_motion_is_the_equilibrium(params):
+def test_hover_periodic_motion_is_the_equilibrium(forward):
     """At mu = 0 the periodic solution is the constant hover equilibrium."""
-    m = periodic_motion(params, 0.0)
+    m = periodic_motion(forward, 0.0)
     xi = m.xi(np.linspace(0, 2 * np.pi, 7))
-    np.testing.assert_allclose(xi, np.tile(Blade(params, 0.0).equilibrium(), (7, 1)), atol=1e-10)
+    np.testing.assert_allclose(xi, np.tile(Blade(forward, 0.0).equilibrium(), (7, 1)), atol=1e-10)
     np.testing.assert_allclose(m.dxi(np.array([0.3, 2.0])), 0.0, atol=1e-10)
 
 
-def test_collocation_solution_is_a_periodic_orbit_of_the_full_equations(params):
+def test_collocation_solution_is_a_periodic_orbit_of_the_full_equations(forward):
     """Integrating the nonlinear equations for one period from xi(0) returns to xi(0), and
     passes through xi(pi) half way (independent check by a Runge-Kutta integrator)."""
-    m = periodic_motion(params, 0.15)
-    blade = Blade(params, 0.15)
+    m = periodic_motion(forward, 0.15)
+    blade = Blade(forward, 0.15)
     sol = solve_ivp(lambda p, z: blade.rhs(p, z), (0, 2 * np.pi), m.z0, method="DOP853",
                     rtol=1e-10, atol=1e-12, t_eval=[np.pi, 2 * np.pi])
     np.testing.assert_allclose(sol.y[:, 0], m.xi(np.pi), atol=1e-5)
@@ -38,21 +33,21 @@ def test_collocation_solution_is_a_periodic_orbit_of_the_full_equations(params):
     assert abs(m.harmonics_deg[0, 2]) > 0.5  # forward flight flaps once per revolution
 
 
-def test_flapping_trim_removes_the_first_harmonics(params):
+def test_flapping_trim_removes_the_first_harmonics(forward):
     """With trim_flapping the cyclic pitch cancels the once-per-rev flapping."""
-    m = periodic_motion(params, 0.15, trim_flapping=True)
+    m = periodic_motion(forward, 0.15, trim_flapping=True)
     np.testing.assert_allclose(m.harmonics_deg[0, 1:], 0.0, atol=1e-6)
     assert m.params.cyclic_cos != 0.0 or m.params.cyclic_sin != 0.0
 
 
-def test_bad_arguments(params):
+def test_bad_arguments(forward):
     """Advance ratio and resolution are checked."""
     with pytest.raises(ValueError, match="mu must be an advance ratio"):
-        periodic_motion(params, -0.1)
+        periodic_motion(forward, -0.1)
     with pytest.raises(ValueError, match="n_points must be an even integer"):
-        periodic_motion(params, 0.1, n_points=7)
+        periodic_motion(forward, 0.1, n_points=7)
     with pytest.raises(PeriodicMotionError, match="no periodic solution found"):
-        periodic_motion(params, 0.15, max_iter=1, tol=1e-30)
+        periodic_motion(forward, 0.15, max_iter=1, tol=1e-30)
 
 
 def test_start_option_seeds_newton_and_bad_starts_are_refused():

@@ -4,7 +4,6 @@ import numpy as np
 import pytest
 
 from rotorlyap import Blade, BladeParameters
-from rotorlyap.model.steady import periodic_motion, tabulate_motion
 from rotorlyap.analysis.functions import (
     certified_radius_estimate, optimised_quadratic_function, quadratic_function,
 )
@@ -17,25 +16,18 @@ A = DEFAULT_SCALES
 
 
 @pytest.fixture(scope="module")
-def hover():
-    """Forward-C.G. blade in hover, its equilibrium, quadratic function and certificate."""
-    p = BladeParameters.table_i("forward")
-    b = Blade(p, 0.0)
-    q = quadratic_function(b)
-    res = blade_stability(p, 0.0, lyapunov=quadratic_function,
-                          n_psi=4, n_sphere=128)
-    return p, b, q, res
+def hover(forward, forward_hover):
+    """Forward-C.G. blade in hover, its quadratic function and certificate."""
+    q = quadratic_function(forward_hover)
+    res = blade_stability(forward, 0.0, lyapunov=quadratic_function, n_psi=4, n_sphere=128)
+    return forward, forward_hover, q, res
 
 
 @pytest.fixture(scope="module")
-def forward_flight():
+def forward_flight(forward, forward_periodic_015):
     """Forward C.G. at mu = 0.15 about its periodic motion (256 collocation points, tabulated)."""
-    p = BladeParameters.table_i("forward")
-    pm = periodic_motion(p, 0.15, n_points=256)
-    tab = tabulate_motion(pm)
-    b = Blade(p, 0.15)
-    q = quadratic_function(b, tab)
-    return p, b, tab, q
+    b = Blade(forward, 0.15)
+    return forward, b, forward_periodic_015, quadratic_function(b, forward_periodic_015)
 
 
 def test_hover_quadratic_function_decreases_near_the_origin(hover):
@@ -97,6 +89,7 @@ def test_periodic_P_solves_the_lyapunov_equation(forward_flight):
                                atol=1e-6 * np.abs(q.P(psi)).max())
 
 
+@pytest.mark.slow
 def test_certificate_about_the_periodic_motion_in_forward_flight(forward_flight):
     """The engine certifies the forward-flight blade about its periodic motion (strict)."""
     p, _, tab, q = forward_flight

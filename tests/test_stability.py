@@ -16,11 +16,6 @@ from rotorlyap.analysis.stability import blade_stability
 from rotorlyap.conventions import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
 
 
-@pytest.fixture(scope="module")
-def forward():
-    return BladeParameters.table_i(cg="forward")
-
-
 def test_energy_function_certifies_nothing_in_hover_strict_reading(forward):
     """READING.md's caution on the real model: W' > 0 on every sphere, so A = 0."""
     res = blade_stability(forward, 0.0, n_psi=8)
@@ -84,6 +79,7 @@ def vacuum_blade(**kw):
     )
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("mu", [0.0, 0.15])
 def test_certified_start_regions_are_bounded_in_simulation(mu):
     """Soundness: from states inside lambda0, the nonlinear motion stays inside ||x|| < A.

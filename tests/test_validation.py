@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from rotorlyap import Blade, BladeParameters
-from rotorlyap.model.steady import disturbed_rhs, periodic_motion, tabulate_motion
+from rotorlyap.model.steady import disturbed_rhs
 from rotorlyap.analysis.functions import quadratic_function
 from rotorlyap.analysis.stability import blade_stability
 from rotorlyap.conventions import DEFAULT_SCALES
@@ -16,12 +16,9 @@ A = DEFAULT_SCALES
 
 
 @pytest.fixture(scope="module")
-def hover_case():
-    p = BladeParameters.table_i("forward")
-    b = Blade(p, 0.0)
-    res = blade_stability(p, 0.0, lyapunov=quadratic_function,
-                          n_psi=4, n_sphere=128)
-    return disturbed_rhs(b, b.equilibrium()), res
+def hover_case(forward, forward_hover):
+    res = blade_stability(forward, 0.0, lyapunov=quadratic_function, n_psi=4, n_sphere=128)
+    return disturbed_rhs(forward_hover, forward_hover.equilibrium()), res
 
 
 def test_confusion_matrix_counts_add_up():
@@ -54,6 +51,7 @@ def test_soundness_in_hover_starts_at_099_lambda0_stay_within_A(hover_case):
     assert not run.left.any() and run.max_norm.max() < res.A
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("cg", ["forward", "neutral", "backward"])
 def test_quadratic_function_certifies_every_table_i_hover_and_simulation_confirms_it(cg):
     """Every Table I case is linearly stable in hover, so the quadratic function (strict
@@ -73,16 +71,15 @@ def test_quadratic_function_certifies_every_table_i_hover_and_simulation_confirm
         assert not run.left.any() and run.max_norm.max() < res.A
 
 
-def test_soundness_in_forward_flight_about_the_periodic_motion():
+@pytest.mark.slow
+def test_soundness_in_forward_flight_about_the_periodic_motion(forward, forward_periodic_015):
     """mu = 0.15 about the periodic motion: starts at 0.99 lambda0 at two azimuths stay within
     the certified bound for 5 revolutions."""
-    p = BladeParameters.table_i("forward")
-    pm = periodic_motion(p, 0.15, n_points=256)
-    tab = tabulate_motion(pm)
-    res = blade_stability(p, 0.15, lyapunov=quadratic_function,
+    tab = forward_periodic_015
+    res = blade_stability(forward, 0.15, lyapunov=quadratic_function,
                           steady=tab, n_psi=4, n_sphere=128)
     assert res.certified
-    f = disturbed_rhs(Blade(p, 0.15), tab)
+    f = disturbed_rhs(Blade(forward, 0.15), tab)
     for j in (0, 2):
         x0 = 0.99 * res.lambda0[j] * start_directions(8, seed=2) * A
         run = simulate_within(f, x0, float(res.psi[j]), 5.0, res.A, scales=A)

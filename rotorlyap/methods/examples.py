@@ -12,7 +12,7 @@ from typing import Callable
 
 import numpy as np
 
-__all__ = ["PeriodicSystem", "mathieu_duffing"]
+__all__ = ["PeriodicSystem", "mathieu_duffing", "mathieu_matrix"]
 
 Function = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
@@ -106,3 +106,37 @@ def mathieu_duffing(
         return (0.5 * kp - d * k(psi)) * y**2 - d * c * y * v + (d - c) * v**2 + b * y**3 * (v + d * y)
 
     return PeriodicSystem(f=f, W=W, dW=dW, period=2 * np.pi, dim=2)
+
+
+def mathieu_matrix(a: float, q: float, damping: float = 0.0) -> Callable[[np.ndarray], np.ndarray]:
+    """The damped Mathieu equation as a linear periodic system ``x' = A(t) x``.
+
+    ``y'' + c y' + (a - 2 q cos 2t) y = 0`` (DLMF ch. 28 notation), ``x = (y, y')``, period
+    ``pi``: the classical test of Floquet theory (the stability chart of DLMF 28.17) and of the
+    periodic Lyapunov equation.
+
+    Parameters
+    ----------
+    a, q : float
+        Mathieu parameters.
+    damping : float
+        ``c`` (>= 0).
+
+    Returns
+    -------
+    callable
+        ``A(t)``: shape ``t.shape + (2, 2)``, for a float ``t`` a ``(2, 2)`` array.
+    """
+    a, q, c = float(a), float(q), float(damping)
+    if not c >= 0:
+        raise ValueError(f"damping must be >= 0, got {damping!r}")
+
+    def A(t):
+        t = np.asarray(t, dtype=float)
+        out = np.zeros(t.shape + (2, 2))
+        out[..., 0, 1] = 1.0
+        out[..., 1, 0] = -(a - 2.0 * q * np.cos(2.0 * t))
+        out[..., 1, 1] = -c
+        return out
+
+    return A

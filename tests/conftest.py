@@ -1,0 +1,33 @@
+"""Fixtures shared by the unit and physics tests, and the ``slow`` marker.
+
+The Table I blade with the forward C.G. is the reference case of most tests: it is built once
+per test session (its hover trim is cached by :func:`rotorlyap.model.trim.hover_trim` too).
+Tests that take seconds are marked ``slow``; ``python -m pytest -m "not slow" tests`` is the
+quick loop while editing (README, "The two commands").
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from rotorlyap.model.blade import Blade
+from rotorlyap.model.parameters import BladeParameters
+from rotorlyap.model.steady import TabulatedMotion, periodic_motion, tabulate_motion
+
+
+@pytest.fixture(scope="session")
+def forward() -> BladeParameters:
+    """Table I with the forward C.G. (the collective left to the hover trim)."""
+    return BladeParameters.table_i("forward")
+
+
+@pytest.fixture(scope="session")
+def forward_hover(forward) -> Blade:
+    """The forward-C.G. blade in hover, trimmed for thrust = weight."""
+    return Blade(forward, 0.0)
+
+
+@pytest.fixture(scope="session")
+def forward_periodic_015(forward) -> TabulatedMotion:
+    """The forward-C.G. blade's periodic motion at mu = 0.15 (256 collocation points), tabulated."""
+    return tabulate_motion(periodic_motion(forward, 0.15, n_points=256))
