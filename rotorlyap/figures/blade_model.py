@@ -30,6 +30,7 @@ from ..conventions import HINGES
 from ..model.blade import Blade
 from ..model.modes import hover_modes
 from ..model.parameters import CG_POSITIONS, BladeParameters, parameter_table
+from .style import CG_COLORS, CG_ROMAN, HINGE_COLORS
 
 __all__ = [
     "SchematicData", "schematic_data",
@@ -40,13 +41,6 @@ __all__ = [
     "TABLE_I_LABELS", "format_value", "markdown_table", "table_i_rows", "assumption_rows",
     "HINGE_COLORS",
 ]
-
-#: Colours of the three hinges, used by every blade figure.
-HINGE_COLORS = {"flap": "tab:blue", "lag": "tab:green", "pitch": "tab:red"}
-
-_CG_COLORS = {"forward": "tab:green", "neutral": "0.3", "backward": "tab:purple"}
-_CG_ROMAN = {"forward": "I", "neutral": "II", "backward": "III"}
-
 
 # --------------------------------------------------------------------------------------
 # Drawing helpers
@@ -316,11 +310,11 @@ def plot_section(data: SchematicData, ax) -> None:
                "backward": ((-0.07, -0.1), "right")}
     for name, xc in data.cg_positions.items():
         yc = (xp - xc) * c
-        ax.plot(yc, 0, "o", ms=3.5, color=_CG_COLORS[name], zorder=7)
+        ax.plot(yc, 0, "o", ms=3.5, color=CG_COLORS[name], zorder=7)
         (tx, ty), ha = text_at.get(name, ((yc, -0.1), "center"))
-        ax.annotate(f"C.G. {_CG_ROMAN[name]} ({name}) {xc:.3g}$c$", (yc, 0), (tx, ty), fontsize=7,
-                    color=_CG_COLORS[name], ha=ha,
-                    arrowprops=dict(arrowstyle="-", color=_CG_COLORS[name], lw=0.6))
+        ax.annotate(f"C.G. {CG_ROMAN[name]} ({name}) {xc:.3g}$c$", (yc, 0), (tx, ty), fontsize=7,
+                    color=CG_COLORS[name], ha=ha,
+                    arrowprops=dict(arrowstyle="-", color=CG_COLORS[name], lw=0.6))
     ax.text(xp * c + 0.01, 0.0, "LE", fontsize=7.5, va="center")
     ax.text(-(1 - xp) * c - 0.01, 0.0, "TE", fontsize=7.5, va="center", ha="right")
     # senses
@@ -629,8 +623,8 @@ def plot_cg_sweep(data: CGSweepData, ax, part: str = "real") -> None:
     ax.axvline(data.pitch_axis, color="tab:red", lw=1.0, ls="-.",
                label=f"pitch axis {data.pitch_axis:.2f}$c$")
     for name, x in CG_POSITIONS.items():
-        ax.text(x, 1.01, _CG_ROMAN[name], transform=ax.get_xaxis_transform(), ha="center",
-                va="bottom", fontsize=8, color=_CG_COLORS[name])
+        ax.text(x, 1.01, CG_ROMAN[name], transform=ax.get_xaxis_transform(), ha="center",
+                va="bottom", fontsize=8, color=CG_COLORS[name])
     ax.set_xlabel("section C.G., fraction of chord behind the leading edge")
     ax.grid(alpha=0.3)
 

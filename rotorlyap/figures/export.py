@@ -45,7 +45,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["figure_csv", "format_value"]
+__all__ = ["figure_csv", "format_value", "glue_facts"]
 
 
 def format_value(value) -> str:
@@ -238,3 +238,15 @@ def figure_csv(data, path: str | os.PathLike, *, layout: str = "auto") -> Path:
             os.unlink(tmp)
         raise
     return out
+
+
+def glue_facts(facts: Mapping) -> None:
+    """Glue every ``name: value`` of ``facts`` for the book's text (myst-nb ``glue``, not displayed).
+
+    The numbers a chapter quotes come from a data object's ``facts()`` method, rounded there to
+    the digits the computation determines; one call glues them all, in order.
+    """
+    from myst_nb import glue
+
+    for name, value in facts.items():
+        glue(name, value, display=False)

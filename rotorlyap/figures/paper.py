@@ -27,6 +27,7 @@ from ..methods.sampling import sphere_extremum, unit_sphere_points
 from ..model.blade import Blade
 from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.trim import hover_trim
+from .style import CATEGORY_COLORS
 
 __all__ = [
     "READING_LABELS", "CASES", "MU_GRID", "MU_GRID_STRICT", "STATE_LABELS",
@@ -640,7 +641,6 @@ CATEGORY_NAMES = (
     "step 3 failed elsewhere (A1 = 0); W' <= 0 here on ||x|| = A",
     "step 3 failed (A1 = 0) and W' > 0 here on ||x|| = A",
 )
-_CATEGORY_COLORS = ("#4daf4a", "#ff7f00", "#fdd0a2", "#d7301f")
 
 
 @dataclass(frozen=True)
@@ -754,7 +754,7 @@ def _edges(values: np.ndarray, lo: float | None = None, hi: float | None = None)
 def _category_cmap():
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
-    return ListedColormap(_CATEGORY_COLORS), BoundaryNorm(np.arange(-0.5, 4.5), 4)
+    return ListedColormap(CATEGORY_COLORS), BoundaryNorm(np.arange(-0.5, 4.5), 4)
 
 
 def plot_regions_polar(data: RegionsData, ax, case_index: int = 0, *, title: str | None = None) -> None:
@@ -833,7 +833,7 @@ def plot_regions_plane(data: RegionsData, ax, case_index: int = 0, *, title: str
     if legend:
         from matplotlib.patches import Patch
 
-        handles = [Patch(color=c, label=n) for c, n in zip(_CATEGORY_COLORS, CATEGORY_NAMES)]
+        handles = [Patch(color=c, label=n) for c, n in zip(CATEGORY_COLORS, CATEGORY_NAMES)]
         handles.append(Patch(facecolor="none", edgecolor="k", hatch="///", label="reverse flow reaches the blade root"))
         ax.legend(handles=handles, fontsize=6.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
 
@@ -946,7 +946,7 @@ def plot_sensitivity(data: SensitivityData, axes) -> None:
         from matplotlib.patches import Patch
 
         ax.axis("off")
-        handles = [Patch(color=c, label=n) for c, n in zip(_CATEGORY_COLORS, CATEGORY_NAMES)]
+        handles = [Patch(color=c, label=n) for c, n in zip(CATEGORY_COLORS, CATEGORY_NAMES)]
         handles.append(Patch(facecolor="none", edgecolor="k", hatch="///", label="reverse flow reaches the root"))
         ax.legend(handles=handles, fontsize=6.5, loc="center")
         break

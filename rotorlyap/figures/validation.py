@@ -33,6 +33,7 @@ from ..methods.validation import long_run, validate
 from ..model.blade import Blade
 from ..model.parameters import BladeParameters
 from ..model.steady import disturbed_rhs, periodic_motion, tabulate_motion
+from .style import CATEGORY_COLORS, HINGE_COLORS, SCAN_EXTRA_COLORS
 
 __all__ = [
     "CASES", "MU_FLOQUET", "MU_SCAN", "CANDIDATES", "Candidate", "SCAN_CATEGORY_NAMES",
@@ -54,7 +55,6 @@ MU_FLOQUET = tuple(float(m) for m in np.round(np.arange(0.0, 0.2501, 0.025), 3))
 #: Advance ratios of the scans (each costs a sphere search per azimuth and function).
 MU_SCAN = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
 
-_HINGE_COLORS = {"flap": "tab:blue", "lag": "tab:orange", "pitch": "tab:red"}
 
 
 def markdown_table(header, rows) -> str:
@@ -274,7 +274,7 @@ def plot_floquet(data: FloquetData, axes) -> None:
         for sw, style in ((data.periodic[c], dict(ls="-", marker="o", ms=2.5, lw=1.2)),
                           (data.hover[c], dict(ls=":", lw=1.0))):
             for t, name in enumerate(sw.names):
-                color = _HINGE_COLORS.get(_hinge(name), "0.3")
+                color = HINGE_COLORS.get(_hinge(name), "0.3")
                 lab = name if sw.steady == "periodic" else None
                 axes[0, c].plot(sw.mu, sw.growth_rate[:, t], color=color, label=lab, **style)
                 axes[1, c].plot(sw.mu, np.abs(sw.frequency[:, t]), color=color, **style)
@@ -330,7 +330,7 @@ SCAN_CATEGORY_NAMES = (
     "no quadratic function: linearisation unstable",
     "no periodic motion found",
 )
-_SCAN_COLORS = ("#4daf4a", "#ff7f00", "#fdd0a2", "#d7301f", "#969696", "#f0f0f0")
+_SCAN_COLORS = CATEGORY_COLORS + SCAN_EXTRA_COLORS
 
 
 def _category(res) -> np.ndarray:

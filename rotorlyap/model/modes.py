@@ -57,6 +57,8 @@ __all__ = [
     "chordwise_lag_offset_angle",
     "derived_quantities",
     "hover_modes",
+    "least_damped",
+    "pitch_mode",
 ]
 
 # --------------------------------------------------------------------------------------
@@ -438,6 +440,26 @@ def derived_quantities(params: BladeParameters) -> DerivedQuantities:
 
 
 @lru_cache(maxsize=64)
+def pitch_mode(modes) -> Mode:
+    """The oscillatory mode dominated by the pitch hinge (of highest frequency if there are
+    several): the pitch-flap flutter candidate.
+
+    Raises
+    ------
+    ValueError
+        If no mode is oscillatory and pitch-dominated.
+    """
+    candidates = [m for m in modes if m.oscillatory and m.dominant_hinge == "pitch"]
+    if not candidates:
+        raise ValueError("no oscillatory pitch-dominated mode among the modes given")
+    return max(candidates, key=lambda m: m.frequency)
+
+
+def least_damped(modes) -> Mode:
+    """The mode with the largest growth rate (the first to go unstable)."""
+    return max(modes, key=lambda m: m.growth_rate)
+
+
 def hover_modes(params: BladeParameters) -> tuple[Mode, ...]:
     """Linear modes with air at the hover equilibrium (trimmed if ``params.collective`` is
     None): the ``air_modes`` of :func:`derived_quantities` without the vacuum analysis."""
