@@ -30,6 +30,7 @@ from ..conventions import HINGES
 from ..model.blade import Blade
 from ..model.modes import hover_modes
 from ..model.parameters import CG_POSITIONS, BladeParameters, parameter_table
+from .export import markdown_table as _markdown_table
 from .style import CG_COLORS, CG_ROMAN, HINGE_COLORS
 
 __all__ = [
@@ -661,13 +662,9 @@ def format_value(value: Any) -> str:
 
 
 def markdown_table(header: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
-    """A Markdown pipe table (``|`` in cells escaped)."""
-    def cell(v: Any) -> str:
-        return (v if isinstance(v, str) else format_value(v)).replace("|", "\\|")
-
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in rows]
-    return "\n".join(lines)
+    """A Markdown pipe table, numbers written by :func:`format_value`
+    (:func:`rotorlyap.figures.export.markdown_table`)."""
+    return _markdown_table(header, rows, fmt=format_value)
 
 
 def table_i_rows(params: BladeParameters) -> list[tuple[str, str, str, str]]:

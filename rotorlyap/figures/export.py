@@ -45,7 +45,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["figure_csv", "format_value", "glue_facts"]
+__all__ = ["figure_csv", "format_value", "glue_facts", "markdown_table"]
 
 
 def format_value(value) -> str:
@@ -250,3 +250,16 @@ def glue_facts(facts: Mapping) -> None:
 
     for name, value in facts.items():
         glue(name, value, display=False)
+
+
+def markdown_table(header: Sequence[str], rows: Sequence[Sequence], *, fmt=str) -> str:
+    """A Markdown pipe table from a header and rows (``|`` in cells escaped, newlines joined).
+
+    Cells that are not strings are written with ``fmt`` (default ``str``).
+    """
+    def cell(v) -> str:
+        return (v if isinstance(v, str) else fmt(v)).replace("|", "\\|").replace("\n", " ")
+
+    lines = ["| " + " | ".join(cell(h) for h in header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(cell(v) for v in row) + " |" for row in rows]
+    return "\n".join(lines)

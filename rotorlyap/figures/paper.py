@@ -27,6 +27,7 @@ from ..methods.sampling import sphere_extremum, unit_sphere_points
 from ..model.blade import Blade
 from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.trim import hover_trim
+from .export import markdown_table  # noqa: F401  (chapter 6 writes its tables with it)
 from .style import CATEGORY_COLORS
 
 __all__ = [
@@ -1089,9 +1090,3 @@ def plot_convergence(data: ConvergenceData, axes) -> None:
 # --------------------------------------------------------------------------------------
 
 
-def markdown_table(header, rows) -> str:
-    """A Markdown table from a header and rows of strings (``|`` in cells is escaped)."""
-    esc = lambda s: str(s).replace("|", "\\|").replace("\n", " ")  # noqa: E731
-    lines = ["| " + " | ".join(esc(h) for h in header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(esc(c) for c in r) + " |" for r in rows]
-    return "\n".join(lines)

@@ -33,6 +33,7 @@ from ..methods.validation import long_run, validate
 from ..model.blade import Blade
 from ..model.parameters import BladeParameters
 from ..model.steady import disturbed_rhs, periodic_motion, tabulate_motion
+from .export import markdown_table  # noqa: F401  (chapter 7 writes its tables with it)
 from .style import CATEGORY_COLORS, HINGE_COLORS, SCAN_EXTRA_COLORS
 
 __all__ = [
@@ -55,14 +56,6 @@ MU_FLOQUET = tuple(float(m) for m in np.round(np.arange(0.0, 0.2501, 0.025), 3))
 #: Advance ratios of the scans (each costs a sphere search per azimuth and function).
 MU_SCAN = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
 
-
-
-def markdown_table(header, rows) -> str:
-    """A Markdown table from a header and rows (``|`` in cells escaped)."""
-    esc = lambda s: str(s).replace("|", "\\|").replace("\n", " ")  # noqa: E731
-    lines = ["| " + " | ".join(esc(h) for h in header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(esc(c) for c in r) + " |" for r in rows]
-    return "\n".join(lines)
 
 
 def _edges(values, lo=None) -> np.ndarray:
