@@ -1,1 +1,1 @@
-"""Cached generated code (see rotorlyap.derivation)."""
+"""Cached generated code (see rotorlyap.model.derivation)."""
