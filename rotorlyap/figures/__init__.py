@@ -1,4 +1,16 @@
-"""Figures of the report: one data function and one drawing function per figure.
+"""Figures of the report, one module per part of the book.
 
-``theory``: the theorem and algorithm chapters (small periodic systems).
+Each module holds, for its chapters, the data objects the notebooks compute (with ``facts()``:
+the numbers the text quotes, rounded to the digits they determine; ``summary()``: the text the
+chapter prints, which nbval compares; and their CSV export) and one drawing function per
+figure.
+
+* :mod:`~rotorlyap.figures.theory`: chapters 1 and 2, the theorem and the algorithm (small
+  periodic systems);
+* :mod:`~rotorlyap.figures.blade_model`: chapters 3 and 4, the blade and Table I;
+* :mod:`~rotorlyap.figures.paper`: chapters 5 and 6, the paper's Figs 4-8;
+* :mod:`~rotorlyap.figures.validation`: chapter 7, beyond the paper;
+* :mod:`~rotorlyap.figures.your_blade`: chapter 8, your own blade;
+* :mod:`~rotorlyap.figures.style` (shared colours), :mod:`~rotorlyap.figures.export` (CSV,
+  glue, tables), :mod:`~rotorlyap.figures.commands` (the command line's figures).
 """
