@@ -117,3 +117,40 @@ def test_every_output_is_compared_as_text_or_is_an_image_nbval_skips(path):
     assert not unknown, (f"{path.name}: output MIME types {sorted(unknown)} are neither compared as text "
                          "nor skipped as images: add them to TEXT_MIMES here or to IMAGE_MIMES in "
                          "book/_ext/notebook_execution.py")
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_every_glued_figure_carries_its_image(path):
+    """A figure glued without pyplot's inline backend is stored as text only ("<Figure ...>")
+    and silently missing from the book; nbval, which never compares images, cannot see it."""
+    missing = []
+    for k, cell in enumerate(_code_cells(path)):
+        for out in cell.get("outputs", []):
+            data = out.get("data", {})
+            text = "".join(data.get("application/papermill.record/text/plain", ""))
+            if text.startswith("<Figure") and "application/papermill.record/image/png" not in data:
+                missing.append(f"cell {k}: {out.get('metadata', {}).get('scrapbook', {}).get('name')}")
+    assert not missing, f"{path.name}: glued figures without an image: {missing}"
+
+
+CODE_SHARE_LIMIT = 0.25
+"""Largest share of a chapter's source characters that is code: the chapters are prose with
+calls into the package (QuantEcon's lectures: 13-23 %)."""
+
+CODE_IS_THE_LESSON = {"08_your_own_blade.ipynb": 0.35}
+"""Chapters whose code a reader is meant to copy: chapter 8 shows the package's API on a
+blade of the reader's own."""
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_chapters_are_prose_with_calls_into_the_package(path):
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    size = {kind: sum(len("".join(c["source"])) for c in nb["cells"] if c["cell_type"] == kind)
+            for kind in ("code", "markdown")}
+    share = size["code"] / (size["code"] + size["markdown"])
+    limit = CODE_IS_THE_LESSON.get(path.name, CODE_SHARE_LIMIT)
+    assert share <= limit, (f"{path.name}: code is {share:.0%} of the chapter (limit {limit:.0%}): move the "
+                            "logic into its rotorlyap.figures module (facts(), summary(), a figure function)")
+    private = sorted({m.group(0) for c in nb["cells"] if c["cell_type"] == "code"
+                      for m in re.finditer(r"\b[a-z_][a-z0-9_]*\._[a-zA-Z]\w*", "".join(c["source"]))})
+    assert not private, f"{path.name} uses private names of the package: {private}"

@@ -9,9 +9,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 
+import dataclasses  # noqa: E402
+
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
 
 from rotorlyap.analysis.functions import energy_function  # noqa: E402
 from rotorlyap.figures import paper  # noqa: E402
@@ -45,8 +48,14 @@ def test_fig4_draws_and_writes_its_csv(trim, tmp_path):
     assert out.read_text().startswith("field,")
 
 
-def test_fig5_strict_positive_practical_zero_and_labelled():
-    d = paper.hover_rate_data((0.23, 0.27), n_sphere=64, n_refine=4, n_fraction=512, n_grid=11)
+@pytest.fixture(scope="module")
+def rate():
+    """Fig. 5 on the three cases and one C.G. behind them that linear theory finds unstable."""
+    return paper.hover_rate_data((0.215, 0.235, 0.255, 0.265), n_sphere=64, n_refine=4, n_fraction=512, n_grid=11)
+
+
+def test_fig5_strict_positive_practical_zero_and_labelled(rate):
+    d = rate
     assert d.strict_label == "strict (certificate)"
     assert d.practical_label == "practical (indicator, not a certificate)"
     # the caution on the real model: W' > 0 on the sphere at every C.G., found by the search
@@ -61,16 +70,21 @@ def test_fig5_strict_positive_practical_zero_and_labelled():
     disp = np.abs(d.test_disturbances[:, :3]).max(axis=1) > 0.5
     assert np.allclose(d.practical_dW[:, disp], 0.0, atol=1e-9)
     assert np.all(d.practical_dW[:, ~disp] < 0.0)
-    # linear theory: stable forward, unstable backward (pitch-flap flutter)
-    assert d.eig_max_real[0] < 0 < d.eig_max_real[1]
+    # linear theory: the three cases stable, 0.01 c behind the backward one unstable
+    assert np.all(d.eig_max_real[:3] < 0) and d.eig_max_real[3] > 0
     assert d.slice_dW.shape == (11, 11)
     fig, axes = plt.subplots(2, 2)
     paper.plot_hover_rate(d, axes.ravel())
     plt.close(fig)
 
 
-def test_fig6_energy_does_not_depend_on_azimuth_and_grows_as_A_squared():
-    d = paper.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0), n_psi=6, n_sphere=16)
+@pytest.fixture(scope="module")
+def wsph():
+    return paper.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0), n_psi=6, n_sphere=16)
+
+
+def test_fig6_energy_does_not_depend_on_azimuth_and_grows_as_A_squared(wsph):
+    d = wsph
     assert d.strict_inf.shape == (3, 6) and d.practical_max.shape == (3, 6)
     assert np.allclose(d.strict_inf, d.strict_inf[:, :1], rtol=1e-9)
     assert np.all(np.diff(d.strict_inf.mean(axis=1)) > 0)
@@ -83,11 +97,16 @@ def test_fig6_energy_does_not_depend_on_azimuth_and_grows_as_A_squared():
     plt.close(fig)
 
 
-def test_fig7_shapes_hover_zero_and_forward_flight_positive():
+@pytest.fixture(scope="module")
+def rate7():
+    return paper.rate_azimuth_data("forward", (0.0, 0.15), n_psi=8, n_sphere=16)
+
+
+def test_fig7_shapes_hover_zero_and_forward_flight_positive(rate7):
     """Pure displacement disturbances (zero rates) have W' = 0 exactly, so the practical maximum
     is never negative; in hover it is 0 (damping only), about the hover equilibrium reused at
     mu = 0.15 a rate disturbance gains energy at most azimuths."""
-    d = paper.rate_azimuth_data("forward", (0.0, 0.15), n_psi=8, n_sphere=16)
+    d = rate7
     assert d.strict_max.shape == (2, 8) == d.practical_max.shape
     assert np.allclose(d.practical_max[0], 0.0, atol=1e-9)
     assert np.all(d.practical_max[1] >= 0) and (d.practical_max[1] > 1.0).sum() >= 5
@@ -191,3 +210,328 @@ def test_markdown_table_escapes_pipes():
     t = paper.markdown_table(("a", "b"), [("x|y", "z")])
     assert t.splitlines()[0] == "| a | b |"
     assert "x\\|y" in t
+
+
+# --------------------------------------------------------------------------------------
+# The chapters' printed summaries and glued facts (chapters 5 and 6)
+# --------------------------------------------------------------------------------------
+
+
+def _closed_figure(fig, size, n_axes):
+    assert isinstance(fig, Figure)
+    assert not plt.fignum_exists(fig.number)  # returned, not left open for the notebook to show
+    assert tuple(fig.get_size_inches()) == pytest.approx(size)
+    assert len(fig.axes) == n_axes
+
+
+def test_hover_sweep_is_the_three_cases_and_0_01_c_steps_to_0_02_c_beyond_them():
+    sweep = paper.hover_sweep()
+    assert np.allclose(sweep.cg, np.arange(0.195, 0.2751, 0.01))
+    assert all(np.isclose(sweep.cg, c).any() for c in sweep.case_cg)
+    assert sweep.facts() == {"ch5_cg_forward": 0.215, "ch5_cg_neutral": 0.235, "ch5_cg_backward": 0.255,
+                             "ch5_sweep_lo": 0.195, "ch5_sweep_hi": 0.275}
+    lines = sweep.summary().splitlines()
+    assert lines[0] == "C.G. of the cases (c): forward 0.215, neutral 0.235, backward 0.255"
+    assert lines[-2:] == ["   strict: strict (certificate)", "practical: practical (indicator, not a certificate)"]
+
+
+def test_fig4_facts_quote_a_collective_falling_as_the_cg_moves_aft_at_equal_angles(trim):
+    f = trim.facts()
+    assert f["ch5_col_slope"] < 0
+    assert f["ch5_col_forward"] > f["ch5_col_neutral"] > f["ch5_col_backward"]
+    assert f["ch5_eq_spread"] < 0.5
+    assert f["ch5_weight"] == pytest.approx(62.76)
+    assert {f"ch5_{q}_{c}" for q in ("col", "beta", "zeta", "theta") for c in paper.CASES} <= set(f)
+    assert all(isinstance(v, float) for v in f.values())  # plain floats: glued as their repr
+
+
+def test_fig4_summary_confirms_thrust_equals_weight_for_every_case(trim):
+    lines = trim.summary().splitlines()
+    assert len(lines) == 8
+    assert all(line.endswith("below 1e-6") for line in lines[1:4])
+    assert "|thrust - weight| < 1e-6 N for every trim: True" in lines[6]
+
+
+def test_fig4_figure_is_the_books_two_panels(trim):
+    _closed_figure(paper.figure_hover_trim(trim), (11, 4.2), 2)
+
+
+@pytest.mark.slow
+def test_trim_limit_lies_between_a_trimmable_and_an_untrimmable_cg():
+    lim = paper.trim_limit_data(0.28, 0.30, tol=1e-2)
+    assert 0.28 <= lim.cg_limit < lim.cg_untrimmable <= 0.30
+    assert lim.cg_untrimmable - lim.cg_limit <= 1e-2
+    assert lim.facts() == {"ch5_trim_limit": round(lim.cg_limit, 3)}
+    assert lim.summary().startswith("hover trim with positive collective exists up to a C.G. of 0.2")
+
+
+def test_trim_limit_needs_an_untrimmable_upper_end():
+    with pytest.raises(ValueError, match="untrimmable"):
+        paper.trim_limit_data(0.215, 0.225, tol=1e-2)
+
+
+@pytest.fixture(scope="module")
+def modes():
+    return paper.hover_modes_data()
+
+
+def test_hover_modes_all_cases_stable_and_the_forward_least_damped_a_slow_lag_pair(modes):
+    for case in paper.CASES:
+        assert modes.least_damped(case).growth_rate < 0
+    fwd = modes.least_damped("forward")
+    assert fwd.oscillatory and fwd.dominant_hinge == "lag" and fwd.frequency < 0.2
+    assert not modes.least_damped("neutral").oscillatory and not modes.least_damped("backward").oscillatory
+    f = modes.facts()
+    assert f["ch5_re_forward"] < f["ch5_re_neutral"] < f["ch5_re_backward"] < 0
+    assert f["ch5_lag_share_forward"] < 0.5 and f["ch5_tau_backward"] > 10
+
+
+def test_hover_pitch_mode_is_the_fastest_mode_and_almost_pure_pitch(modes):
+    for case, ms in zip(modes.case_names, modes.modes):
+        pm = modes.pitch(case)
+        assert pm.frequency == max(m.frequency for m in ms)
+        assert pm.shape[2] == 1.0 and max(pm.shape[:2]) < 0.1
+
+
+def test_backward_cg_flutters_without_the_aerodynamic_pitch_damping(modes):
+    assert modes.pitch("backward", pitch_damping=False).growth_rate > 0
+    assert modes.pitch("forward", pitch_damping=False).growth_rate < 0
+    assert modes.facts()["ch5_pitch_re0_backward"] > 0
+
+
+def test_hover_modes_summary_lists_each_mode_once_least_damped_first(modes):
+    for ms in modes.modes:
+        rates = [m.growth_rate for m in ms]
+        assert rates == sorted(rates, reverse=True)
+    rows = modes.summary().splitlines()[1:1 + sum(len(ms) for ms in modes.modes)]
+    assert [r.split()[0] for r in rows] == ["forward"] * 3 + ["neutral"] * 4 + ["backward"] * 4
+    assert rows[0].split()[2:5] == ["-0.145", "+-", "0.086j"]
+
+
+@pytest.fixture(scope="module")
+def readings():
+    return paper.hover_readings_data(("forward",), n_psi=4)
+
+
+def test_hover_readings_strict_certifies_nothing_practical_every_azimuth(readings):
+    (s,), (q,) = readings.strict, readings.practical
+    assert s.reading == "strict" and q.reading == "practical"
+    assert not s.stable.any() and q.stable.all()
+    f = readings.facts()
+    assert f["ch5_prac_stable_forward"] == 4 and f["ch5_step3_forward"] > 50
+    assert 0 < f["ch5_prac_lambda0"] < 1
+    assert readings.summary().splitlines()[1].startswith("  strict (certificate): nothing certified")
+
+
+def test_search_check_the_engines_default_search_finds_the_refined_maximum(readings, rate):
+    check = paper.search_check(readings, rate)
+    assert check.case_names == ("forward",)
+    assert check.gap < 1.0
+    assert check.facts() == {"ch5_search_gap": round(check.gap, 2)}
+    assert check.summary().startswith("forward   engine step 3 (default search):")
+
+
+def test_fig5_facts_quote_a_flat_strict_maximum_and_the_forward_maximiser(rate):
+    f = rate.facts()
+    assert abs(f["ch5_smax_change"]) < 2
+    assert f["ch5_smax_forward"] == round(float(rate.strict_max[0]), 1)
+    assert f["ch5_pmax"] == 0.0
+    assert f["ch5_arg_theta"] > 0.8 and f["ch5_aero_flap"] > 0.9 * f["ch5_smax_forward"]
+    assert f["ch5_cg_most_stable"] == 0.215 and f["ch5_eig_hi"] > 0 > f["ch5_eig_lo"]
+    lines = rate.summary().splitlines()
+    assert len(lines) == 11 and lines[7].startswith("argmax x_i/a_i at 0.215 c:")
+
+
+def test_fig5_case_index_needs_the_case_in_the_sweep(rate):
+    assert rate.case_index("backward") == 2
+    short = dataclasses.replace(rate, cg=rate.cg + 0.001)
+    with pytest.raises(ValueError, match="does not contain"):
+        short.case_index("forward")
+
+
+def test_fig5_figure_is_the_books_four_panels_and_a_colour_bar(rate):
+    _closed_figure(paper.figure_hover_rate(rate), (11.5, 8.6), 5)
+
+
+@pytest.mark.slow
+def test_linear_divergence_sets_in_just_behind_the_backward_case_as_a_real_root(rate):
+    div = paper.hover_divergence_data(rate, n_psi=4, xtol=1e-3)
+    assert 0.255 < div.cg_cross < 0.265
+    assert not div.cross_mode.oscillatory and abs(div.cross_mode.growth_rate) < 1e-2
+    assert np.all(np.diff(div.pitch_re) > 0)  # the pitch mode loses damping monotonically aft
+    f = div.facts()
+    assert f["ch5_n_div"] == 1 and f["ch5_n_div_prac_min"] == 4  # the practical reading still says stable
+    assert 0 < f["ch5_div_behind_backward"] < 0.01
+    assert div.summary().splitlines()[0].endswith("(there: a real root, frequency 0.000/rev)")
+
+
+def test_linear_divergence_needs_a_sweep_that_turns_unstable(rate):
+    stable = dataclasses.replace(rate, eig_max_real=-np.abs(rate.eig_max_real))
+    with pytest.raises(ValueError, match="turn unstable"):
+        paper.hover_divergence_data(stable)
+
+
+def test_unbalanced_loads_vanish_in_hover_and_not_in_forward_flight():
+    hover = paper.unbalanced_loads_data("forward", 0.0, psi_step_deg=90.0)
+    assert np.allclose(hover.delta_q, 0.0, atol=1e-6)
+    loads = paper.unbalanced_loads_data("forward", 0.15, psi_step_deg=45.0)
+    f = loads.facts()
+    assert set(f) == {f"ch6_dq_{h}_{e}" for h in ("flap", "lag", "pitch") for e in ("min", "max")}
+    assert f["ch6_dq_flap_max"] > 1e5 > f["ch6_dq_flap_min"]
+    assert loads.summary().splitlines()[0].startswith("Delta Q(psi, x = 0) at mu = 0.15, forward C.G.")
+
+
+def test_fig6_pitch_displacement_is_the_axis_with_the_least_energy(wsph):
+    assert int(np.argmin(wsph.axis_W)) == 2
+    f = wsph.facts()
+    assert f["ch6_w_theta"] < f["ch6_w_fl_min"]
+    assert f["ch6_w_var"] == 0.0  # W has no azimuth in it
+    assert {f"ch6_winf_{i}" for i in range(3)} <= set(f) and abs(f["ch6_rinf_change"]) < 2
+    assert wsph.summary().splitlines()[-1].startswith("W along each axis at ||x|| = 1 (J): \\beta ")
+
+
+def test_fig6_figure_is_the_books_two_panels(wsph):
+    _closed_figure(paper.figure_w_spheres(wsph), (11.5, 4.3), 2)
+
+
+def test_disturbance_names_name_the_twelve_signed_axes():
+    names = paper.disturbance_names(PAPER_TEST_DISTURBANCES)
+    assert names[:6] == ("+\\beta", "+\\zeta", "+\\theta", "+\\beta'", "+\\zeta'", "+\\theta'")
+    assert names[6:] == tuple("-" + n[1:] for n in names[:6])
+
+
+def test_fig7_the_largest_axis_maximum_is_the_practical_maximum(rate7):
+    assert rate7.axis_max.shape == (2, 12)
+    assert np.allclose(rate7.axis_max.max(axis=1), rate7.practical_max.max(axis=1))
+    f = rate7.facts()
+    assert f["ch6_f7_ax_betadot"] > f["ch6_f7_ax_thetadot"]  # the flap rate carries W'
+    assert f["ch6_f7_npos_005"] + f["ch6_f7_nzero_005"] == 8
+    assert rate7.summary().splitlines()[-2] == "mu = 0.15: largest W' over the azimuth along each axis (J/rad):"
+
+
+def test_fig7_figure_is_the_books_two_panels(rate7):
+    _closed_figure(paper.figure_rate_azimuth(rate7), (12, 4.3), 2)
+
+
+@pytest.fixture(scope="module")
+def maps():
+    return paper.region_maps(("forward",), (0.0, 0.0125, 0.1), (0.0, 0.25), n_psi=8, n_sphere_strict=16)
+
+
+def test_fig8_facts_practical_hover_stable_forward_flight_not_strict_nothing(maps):
+    f = maps.facts()
+    assert f["ch6_p_hover_stable"] == f["ch6_p_n_hover"] == 8
+    assert f["ch6_p_fw_stable"] == 0 and f["ch6_s_stable"] == 0 and f["ch6_s_cells"] == 16
+    assert f["ch6_p_mu1"] == 0.0125 and f["ch6_p_mu_mid"] == 0.1
+    assert 0 <= f["ch6_p_adv_mid"] <= 1 and f["ch6_root"] == round(paper.case_params("forward").root_r_over_R, 3)
+    text = maps.summary()
+    assert "practical, W' > 0 on the sphere: the same map for every C.G.: True" in text
+    assert text.splitlines()[0] == "practical (indicator, not a certificate)"
+
+
+def test_fig8_export_has_one_row_per_case_mu_and_azimuth(maps, tmp_path):
+    cols = dict(maps.practical.export())
+    assert all(len(v) == 3 * 8 for v in cols.values())
+    assert list(cols) == ["case", "mu", "psi_deg", "category", "stable", "max_dW"]
+    assert figure_csv(maps.practical.export(), tmp_path / "r.csv").read_text().startswith("case,mu,psi_deg")
+
+
+def test_fig8_figures_have_a_panel_per_reading_and_case_and_the_legend(maps):
+    for fig, size in ((paper.figure_regions_polar(maps.practical, maps.strict), (12, 8.6)),
+                      (paper.figure_regions_plane(maps.practical, maps.strict), (13, 6.8))):
+        _closed_figure(fig, size, 2)
+        [legend] = fig.legends
+        assert len(legend.get_texts()) == len(paper.CATEGORY_NAMES) + 1
+
+
+def test_practical_reading_calls_a_fluttering_blade_stable_in_hover():
+    check = paper.hover_flutter_check(("forward",), "backward", n_psi=4)
+    assert check.growth_rate[0] < 0 < check.flutter_growth_rate
+    assert check.flutter_stable == 4
+    assert check.facts() == {"ch6_flut_re": f"{check.flutter_growth_rate:+.3f}", "ch6_flut_stable": 4}
+
+
+@pytest.mark.slow
+def test_drees_inflow_has_a_practical_threshold_above_glauerts():
+    thr = paper.practical_threshold_data("forward", ("glauert", "drees"), ("12 axes",), n_psi=4, n_bisect=2)
+    assert thr.threshold_of("glauert", "12 axes") == 1e-7  # any forward speed switches Glauert's gradient on
+    assert thr.threshold_of("drees", "12 axes") > 1e-5
+    assert set(thr.facts()) == {"ch6_thr_dr_12", "ch6_lam_dr_12", "ch6_v_dr_12"}
+    p = paper.case_params("forward")
+    assert thr.speed[0] == pytest.approx(thr.threshold_of("drees", "12 axes") * p.rotor_speed * p.radius)
+    assert len(thr.summary().splitlines()) == 3
+
+
+def _synthetic_sensitivity(regions):
+    """The default variants of sensitivity_data made from one practical map (hover and mu = 0.1),
+    with mu = 0.2 added as a copy of mu = 0.1: 'A = 4' keeps its bound up to mu = 0.1 and is
+    stable at psi = 90 and 270 deg there."""
+    def grow(a):
+        return np.concatenate([a, a[:, -1:]], axis=1)
+
+    base = dataclasses.replace(regions, mu_values=np.append(regions.mu_values, 0.2), stable=grow(regions.stable),
+                               category=grow(regions.category), max_dW=grow(regions.max_dW),
+                               A_used=grow(regions.A_used), lambda0=grow(regions.lambda0))
+    stable = base.stable.copy()
+    stable[0, 1, [2, 6]] = True
+    a4 = dataclasses.replace(base, stable=stable, A_used=np.array([[4.0, 4.0, 0.0]]))
+    names = ("default: 12 axes, A = 1", "A = 0.5", "A = 2", "A = 4", "energy-balanced a_i",
+             "axes + diagonals (72)", "flap and lag axes only (8)")
+    return paper.SensitivityData(names=names, regions=tuple(a4 if n == "A = 4" else base for n in names),
+                                 scales=tuple(np.array(DEFAULT_SCALES) for _ in names), n_tests=(12,) * 7)
+
+
+def test_sensitivity_facts_find_the_stable_cells_of_the_large_bound(regions):
+    sens = _synthetic_sensitivity(regions)
+    f = sens.facts()
+    assert f["ch6_a4_mu_last"] == 0.1 and f["ch6_a4_mu_fail"] == 0.2
+    assert f["ch6_a4_stable"] == 2 and f["ch6_a4_stable_mu"] == 0.1 and f["ch6_a4_stable_psi"] == "90, 270"
+    assert f["ch6_sens_fw_stable"] == 2 and f["ch6_diag_A0"] == 1.0
+    assert sens.stable_forward_flight("default: 12 axes, A = 1")[0] == 0
+    lines = sens.summary().splitlines()
+    assert len(lines) == 2 + 7 + 2 and lines[-1].startswith("A = 4: step 3 keeps A up to mu = 0.1 ;")
+    assert lines[-2].endswith("cell by cell: True")
+    cols = dict(sens.export())
+    assert list(cols)[:2] == ["v0_category", "v0_A_used"] and list(cols)[-2:] == ["mu", "psi_deg"]
+    _closed_figure(paper.figure_sensitivity(sens), (14, 6.6), 8)
+
+
+def _synthetic_convergence():
+    return paper.ConvergenceData(
+        n_sphere=np.array([0, 64, 256]), sup_dW_hover=np.array([[90.0, 92.0, 92.001]] * 3),
+        n_stations=np.array([6, 12, 24]), collective=np.array([[0.15, 0.1501, 0.15]] * 3),
+        sup_dW_stations=np.array([92.5, 92.0, 92.0]), practical_rate_stations=np.array([1125.2, 1125.1, 1125.1]),
+        n_psi=np.array([36, 72]), unstable_fraction_psi=np.array([[0.0, 1.0], [0.0, 1.0]]),
+        positive_fraction_psi=np.array([[0.0, 0.6], [0.0, 0.64]]), mu_values=np.array([0.0, 0.1]),
+        mu_check=0.15, variant="flap and lag axes only (8)")
+
+
+def test_convergence_facts_state_deviations_as_the_decade_above_them():
+    conv = _synthetic_convergence()
+    assert conv.default_stations_index == 1
+    dev_ns, dev_st, dev_psi = conv.deviations()
+    assert dev_ns == pytest.approx(1e-3 / 92.001)
+    assert dev_st == pytest.approx(1e-4 / 0.15)
+    assert dev_psi == pytest.approx(0.04)
+    assert conv.facts() == {"ch6_dev_ns": 0.01, "ch6_dev_st": 0.1, "ch6_dev_psi": 0.04}
+    assert conv.summary().splitlines()[-2] == "largest deviation: n_sphere >= 64: < 1e-02 %; 12 stations vs 24: < 1e-01 %"
+
+
+def test_convergence_figure_is_the_books_three_panels():
+    _closed_figure(paper.figure_convergence(_synthetic_convergence()), (14, 4.0), 3)
+
+
+def test_claims_table_has_a_row_per_claim_and_both_readings(wsph, rate7, maps, regions):
+    flutter = paper.HoverFlutterCheck(case_names=paper.CASES, growth_rate=np.array([-0.145, -0.097, -0.007]),
+                                      flutter_case="backward", flutter_growth_rate=0.116, flutter_stable=72, n_psi=72)
+    threshold = paper.ThresholdData(cg="forward", models=("glauert", "drees"), test_sets=("12 axes",),
+                                    threshold=np.array([[1e-7], [0.0015]]), speed_model="drees",
+                                    hover_lambda0=np.array([0.039]), speed=np.array([0.33]))
+    sens = _synthetic_sensitivity(regions)
+    table = paper.claims_table(_synthetic_convergence(), wsph, rate7, maps, flutter, threshold, sens)
+    assert len(table.rows) == 7 and all(len(r) == len(paper.CLAIMS_HEADER) for r in table.rows)
+    assert table.markdown().splitlines()[0].startswith("| claim (the paper's figure numbers) | strict (certificate) |")
+    lines = table.summary().splitlines()
+    assert len(lines) == 7 and "| strict: not reproduced" in lines[1]
+    assert "-0.145 / -0.097 / -0.007" in table.rows[1][3]
+    assert "0.0015 (Drees inflow)" in table.rows[5][3]

@@ -1,47 +1,141 @@
-"""Figures and tables of the blade-model and Table I chapters.
+"""Figures, tables and printed numbers of the blade-model and Table I chapters.
 
 One data function (returning a frozen dataclass, no plotting) and one drawing function (taking
-that data and a matplotlib ``Axes``) per figure panel, as in :mod:`rotorlyap.figures.theory`.
-Notebooks call both and print a rounded summary of the data.
+that data and a matplotlib ``Axes``) per figure panel, as in :mod:`rotorlyap.figures.theory`,
+and one function per figure that creates the whole matplotlib ``Figure`` from the data
+(``figure_*``). Every data object a chapter prints or quotes has
+
+* ``summary()``: the text the chapter prints, rounded to the digits the computation
+  determines (README, "What a committed output may print");
+* ``facts()``: ``{glue name: value}``, the numbers the chapter's text quotes, rounded the same
+  way (glued with :func:`rotorlyap.figures.export.glue_facts`);
+* ``markdown()`` for a table, and ``export()`` where the CSV of a figure is not the
+  dataclass itself (:func:`rotorlyap.figures.export.figure_csv`).
+
+Chapter 3, the blade model:
 
 * :func:`schematic_data` with :func:`plot_blade_top_view`, :func:`plot_hub_top_view`,
-  :func:`plot_hub_side_view`, :func:`plot_section`: the drawn blade (our reading of the
-  paper's lost Fig. 3), dimensions in metres computed from the parameters.
-* :func:`coefficient_data` with :func:`plot_coefficient`: airfoil coefficients on the full
-  angle range.
-* :func:`angle_of_attack_data` with :func:`plot_angle_of_attack`: section angles of attack
-  along the span at the hover equilibrium, in hover and forward flight.
-* :func:`cg_sweep_data` with :func:`plot_cg_sweep`: hover eigenvalues against the chordwise
-  C.G. position.
-* :func:`markdown_table`, :func:`table_i_rows`, :func:`assumption_rows`: the Table I and
-  assumption tables as Markdown.
+  :func:`plot_hub_side_view`, :func:`plot_section` and :func:`figure_blade_schematic`: the
+  drawn blade (our reading of the paper's lost Fig. 3), dimensions in metres computed from
+  the parameters.
+* :func:`closed_form_data`, :func:`hinge_balance_data`, :func:`pitch_flap_coupling_data`,
+  :func:`pitch_damping_data`: closed-form frequencies, the moments at the hover equilibrium,
+  the pitch-flap coupling and the aerodynamic pitch damping of the hover pitch mode.
+* :func:`coefficient_data` with :func:`plot_coefficient` and
+  :func:`figure_airfoil_coefficients`: airfoil coefficients on the full angle range.
+* :func:`angle_of_attack_data` with :func:`plot_angle_of_attack` and
+  :func:`figure_angle_of_attack`: section angles of attack along the span at the hover
+  equilibrium, in hover and forward flight.
+* :func:`generated_code_check`, :func:`positivity_data`: the generated code against sympy,
+  and the local positivity of the energy function.
+
+Chapter 4, Table I:
+
+* :func:`markdown_table`, :func:`table_i_rows`, :func:`table_i_markdown`,
+  :func:`assumption_rows`, :func:`assumption_data`, :func:`airfoil_table_data`: the Table I,
+  assumption and airfoil tables as Markdown.
+* :func:`choices_data`: the readings of the missing data (the helicopter, the blade mass,
+  "neutral" C.G., the hub element e2).
+* :func:`derived_table_data`, :func:`vacuum_modes_data`, :func:`air_modes_data`,
+  :func:`hover_stability_data`: derived quantities and hover modes of the three C.G. cases.
+* :func:`sensitivity_data`, :func:`variants_data`: hover stability under the two readings
+  and switched-off ingredients.
+* :func:`cg_sweep_data` with :func:`plot_cg_sweep`, :func:`cg_sweep_pair_data` and
+  :func:`figure_cg_sweep`: hover eigenvalues against the chordwise C.G. position, with and
+  without the aerodynamic pitch damping.
 """
 
 from __future__ import annotations
 
+import inspect
 import math
-from dataclasses import dataclass, replace
+from collections.abc import Mapping
+from dataclasses import dataclass, fields, replace
 from typing import Any, Sequence
 
 import numpy as np
+from matplotlib.figure import Figure
 from matplotlib.patches import Circle, FancyArrowPatch, Polygon, Rectangle
 
+from ..analysis.functions import energy_function
 from ..conventions import HINGES
+from ..model.airfoil import NACA23012, NACA23012_SOURCES
 from ..model.blade import Blade
-from ..model.modes import hover_modes
-from ..model.parameters import CG_POSITIONS, BladeParameters, parameter_table
+from ..model.modes import (
+    ClosedForms,
+    DerivedQuantities,
+    Mode,
+    chordwise_lag_offset_angle,
+    closed_forms,
+    derived_quantities,
+    hover_modes,
+    least_damped,
+    pitch_mode,
+)
+from ..model.parameters import CG_POSITIONS, THIN_AIRFOIL_CM_Q, BladeParameters, parameter_table
 from .export import markdown_table as _markdown_table
-from .style import CG_COLORS, CG_ROMAN, HINGE_COLORS
+from .style import CG_COLORS, CG_ROMAN, HINGE_COLORS, figure
 
 __all__ = [
-    "SchematicData", "schematic_data",
+    # chapter 3
+    "SchematicData", "schematic_data", "figure_blade_schematic",
     "plot_blade_top_view", "plot_hub_top_view", "plot_hub_side_view", "plot_section",
-    "CoefficientData", "coefficient_data", "plot_coefficient",
-    "AngleOfAttackData", "angle_of_attack_data", "plot_angle_of_attack",
+    "ClosedFormData", "closed_form_data",
+    "HingeBalanceData", "hinge_balance_data",
+    "PitchFlapCouplingData", "pitch_flap_coupling_data", "effective_flap_frequency",
+    "PitchDampingData", "pitch_damping_data", "pitch_damping_estimate",
+    "CoefficientData", "coefficient_data", "plot_coefficient", "figure_airfoil_coefficients",
+    "AngleOfAttackData", "angle_of_attack_data", "plot_angle_of_attack", "figure_angle_of_attack",
+    "GeneratedCodeCheck", "generated_code_check",
+    "PositivityData", "positivity_data",
+    # chapter 4
+    "TABLE_I_LABELS", "format_value", "markdown_table", "table_i_rows", "table_i_markdown",
+    "assumption_rows", "AssumptionData", "assumption_data",
+    "AirfoilTableData", "airfoil_table_data",
+    "ChoicesData", "choices_data", "pitch_axis_reading",
+    "HoverCasesData", "DerivedTableData", "derived_table_data",
+    "VacuumModesData", "vacuum_modes_data", "AirModesData", "air_modes_data",
+    "HoverStabilityData", "hover_stability_data",
+    "SensitivityCase", "SensitivityData", "sensitivity_data",
+    "VariantsData", "variants_data",
     "CGSweepData", "cg_sweep_data", "plot_cg_sweep",
-    "TABLE_I_LABELS", "format_value", "markdown_table", "table_i_rows", "assumption_rows",
-    "HINGE_COLORS",
+    "CGSweepPairData", "cg_sweep_pair_data", "figure_cg_sweep",
+    "CASE_SHORT", "READINGS", "DAMPINGS", "CG_SWEEP_GRID",
 ]
+
+#: Short names of the C.G. cases in the glue names of chapter 4 (``ch4_pitch_fwd``).
+CASE_SHORT = {"forward": "fwd", "neutral": "neu", "backward": "bwd"}
+
+_NUMBER_WORDS = ("none", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten")
+
+
+def _how_many(n: int, total: int) -> str:
+    """``n`` of ``total`` cases in words, as the text quotes it: "none", "two", "all three"."""
+    word = _NUMBER_WORDS[n] if n < len(_NUMBER_WORDS) else str(n)
+    return f"all {word}" if n == total and total > 2 else word
+
+
+def _r3(x: float) -> float:
+    """Rounded to 3 decimals, without a negative zero: the value both printed and glued."""
+    return round(float(x), 3) + 0.0
+
+
+def _r4(x: float) -> float:
+    """Rounded to 4 decimals for printing, without a negative zero."""
+    return round(float(x), 4) + 0.0
+
+
+def _kind(m: Mode) -> str:
+    """"lag-dominated, real": the dominant hinge and the kind of a mode."""
+    return "%s-dominated, %s" % (m.dominant_hinge, "oscillatory" if m.oscillatory else "real")
+
+
+def _case_name(params: BladeParameters) -> str:
+    """"forward C.G." for a Table I C.G. position, else "C.G. 0.24c"."""
+    for name, x in CG_POSITIONS.items():
+        if isinstance(params.cg_position, float) and params.cg_position == x:
+            return f"{name} C.G."
+    return "C.G. %.3gc" % float(params.cg_position_at(0.75))
 
 # --------------------------------------------------------------------------------------
 # Drawing helpers
@@ -137,6 +231,40 @@ class SchematicData:
     cg_positions: dict
     stations: np.ndarray
 
+    def export(self) -> dict:
+        """The fields for :func:`~rotorlyap.figures.export.figure_csv`, without the C.G. mapping
+        (its values are in the chapter's text and in Table I)."""
+        return {f.name: getattr(self, f.name) for f in fields(self) if f.name != "cg_positions"}
+
+    def summary(self) -> str:
+        """Hub dimensions (m, to 0.1 mm), root cutout and cuff, the stations and the chordwise
+        reference points, as chapter 3 prints them."""
+        cg = ", ".join("%s %.3g" % kv for kv in self.cg_positions.items())
+        return "\n".join([
+            f"hub elements e1..e5 (m): {np.round(self.hub_lengths, 4)}",
+            "flap hinge x = %.4f m; lag hinge (x, z) = (%.4f, %.4f) m; pitch hinge x = %.4f m"
+            % (self.flap_hinge[0], *self.lag_hinge, self.pitch_hinge[0]),
+            "root cutout R - R1 = %.3f m; massless cuff from the pitch hinge to the root: %.3f m"
+            % (self.root_cutout, self.root_cutout - self.pitch_hinge[0]),
+            "%d aerodynamic stations from r/R = %.4f to %.4f"
+            % (len(self.stations), self.stations[0] / self.radius, self.stations[-1] / self.radius),
+            "chordwise positions (fraction of chord behind the leading edge): pitch axis %.3g, "
+            "aerodynamic centre %.3g, C.G. %s" % (self.pitch_axis, self.aerodynamic_centre, cg),
+        ])
+
+    def facts(self) -> dict[str, Any]:
+        """Hub elements e1..e4 (m, 4 decimals), pitch hinge, cutout and cuff (m, 3 decimals),
+        the number of stations, and the chordwise positions (fractions of chord, as given)."""
+        e = self.hub_lengths
+        out: dict[str, Any] = {f"ch3_e{k + 1}": round(e[k], 4) for k in range(4)}
+        out.update(ch3_pitch_hinge=round(self.pitch_hinge[0], 3), ch3_cutout=round(self.root_cutout, 3),
+                   ch3_cuff=round(self.root_cutout - self.pitch_hinge[0], 3),
+                   ch3_n_stations=len(self.stations), ch3_xc_pitch_axis=self.pitch_axis,
+                   ch3_xc_ac=self.aerodynamic_centre)
+        out.update({"ch3_xc_cg_" + name: x for name, x in self.cg_positions.items()})
+        out["ch3_cg_step"] = round(self.cg_positions["backward"] - self.cg_positions["neutral"], 3)
+        return out
+
 
 def schematic_data(params: BladeParameters) -> SchematicData:
     """Geometry of ``params`` for the schematic (BLADE_SPEC reading of the hub elements)."""
@@ -150,6 +278,19 @@ def schematic_data(params: BladeParameters) -> SchematicData:
         aerodynamic_centre=float(params.aerodynamic_centre_at(ro)),
         cg_positions=dict(CG_POSITIONS), stations=params.stations()[0] * params.radius,
     )
+
+
+def figure_blade_schematic(data: SchematicData) -> Figure:
+    """The four panels of the schematic in one figure, 11 x 10 in: (a) the blade from above,
+    (b) the hub from above, (c) the hub from the side, (d) a section."""
+    fig = figure(figsize=(11, 10))
+    gs = fig.add_gridspec(3, 4, height_ratios=[1.0, 0.95, 0.9])
+    plot_blade_top_view(data, fig.add_subplot(gs[0, :]))
+    plot_hub_top_view(data, fig.add_subplot(gs[1, :2]))
+    plot_hub_side_view(data, fig.add_subplot(gs[1, 2:]))
+    plot_section(data, fig.add_subplot(gs[2, 1:3]))
+    fig.tight_layout()
+    return fig
 
 
 def plot_blade_top_view(data: SchematicData, ax) -> None:
@@ -335,6 +476,228 @@ def plot_section(data: SchematicData, ax) -> None:
 
 
 # --------------------------------------------------------------------------------------
+# Chapter 3: closed forms, the moments at the equilibrium, pitch-flap coupling, pitch damping
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ClosedFormData:
+    """Closed-form rotating frequencies of a blade in vacuum at zero pitch, eq. (closed forms).
+
+    Attributes
+    ----------
+    closed_forms : rotorlyap.model.modes.ClosedForms
+        The frequencies (per rev) and the inertias about the hinges (kg m^2).
+    """
+
+    closed_forms: ClosedForms
+
+    def summary(self) -> str:
+        """The three frequencies (per rev) and inertias (kg m^2), as chapter 3 prints them."""
+        cf = self.closed_forms
+        return "\n".join([
+            "closed forms (zero pitch): nu_beta = %.4f, nu_zeta = %.4f, nu_theta = %.3f per rev"
+            % (cf.flap_frequency, cf.lag_frequency, cf.pitch_frequency),
+            "I_beta = %.1f kg m^2, I_zeta = %.1f kg m^2, I_theta = %.4f kg m^2"
+            % (cf.flap_inertia, cf.lag_inertia, cf.pitch_inertia),
+        ])
+
+    def facts(self) -> dict[str, float]:
+        """nu_beta (4 decimals), nu_zeta (3) and nu_theta (2), per rev."""
+        cf = self.closed_forms
+        return {"ch3_nu_beta": round(cf.flap_frequency, 4), "ch3_nu_zeta": round(cf.lag_frequency, 3),
+                "ch3_nu_theta": round(cf.pitch_frequency, 2)}
+
+
+def closed_form_data(params: BladeParameters) -> ClosedFormData:
+    """:func:`rotorlyap.model.modes.closed_forms` of ``params`` at zero pitch."""
+    return ClosedFormData(closed_forms(params))
+
+
+@dataclass(frozen=True)
+class HingeBalanceData:
+    """The generalised forces about each hinge at the hover equilibrium (they balance).
+
+    Attributes
+    ----------
+    case : str
+        "forward C.G." (a Table I case) or "C.G. 0.24c".
+    equilibrium : numpy.ndarray
+        ``(beta, zeta, theta)``, rad.
+    conservative, aerodynamic, damping : numpy.ndarray
+        Moments about the flap, lag and pitch hinges, N m, shape (3,): centrifugal, Coriolis,
+        gravity and springs; air loads; hinge dampers.
+    """
+
+    case: str
+    equilibrium: np.ndarray
+    conservative: np.ndarray
+    aerodynamic: np.ndarray
+    damping: np.ndarray
+
+    def summary(self) -> str:
+        """Equilibrium angles (deg, 3 decimals) and the moments (N m, 0.1 N m); the sum is at
+        round-off level and prints as 0.0."""
+        lines = ["hover equilibrium, %s: beta = %.3f, zeta = %.3f, theta = %.3f deg"
+                 % (self.case, *np.degrees(self.equilibrium))]
+        for k, hinge in enumerate(HINGES):
+            c, a, d = self.conservative[k], self.aerodynamic[k], self.damping[k]
+            lines.append("%-5s  conservative %9.1f  aerodynamic %9.1f  damping %4.1f  sum %5.1f  N m"
+                         % (hinge, c, a, d + 0.0, round(c + a + d, 1) + 0.0))
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, int]:
+        """The aerodynamic flap and lag moments, N m to 10 N m."""
+        return {"ch3_flap_aero": int(round(self.aerodynamic[0], -1)),
+                "ch3_lag_aero": int(round(self.aerodynamic[1], -1))}
+
+
+def hinge_balance_data(blade: Blade) -> HingeBalanceData:
+    """Generalised forces of ``blade`` at its hover equilibrium (``Blade.generalised_forces``)."""
+    z = blade.equilibrium()
+    gf = blade.generalised_forces(0.0, z)
+    return HingeBalanceData(case=_case_name(blade.params), equilibrium=np.array(z[:3]),
+                            conservative=np.asarray(gf["conservative"]),
+                            aerodynamic=np.asarray(gf["aerodynamic"]), damping=np.asarray(gf["damping"]))
+
+
+def effective_flap_frequency(flap_frequency: float, lock_number: float, pitch_flap_coupling: float) -> float:
+    """Classical hover flap frequency with pitch-flap coupling, ``sqrt(nu_beta^2 + gamma/8 k3)``,
+    per rev (Johnson 1980; ``k3 = tan(delta3)``, the pitch change per flap being ``-k3``).
+
+    Parameters
+    ----------
+    flap_frequency : float
+        ``nu_beta``, per rev.
+    lock_number : float
+        ``gamma``, -.
+    pitch_flap_coupling : float
+        ``tan(delta3)``, -.
+    """
+    return math.sqrt(flap_frequency ** 2 + lock_number / 8 * pitch_flap_coupling)
+
+
+@dataclass(frozen=True)
+class PitchFlapCouplingData:
+    """The pitch-flap coupling of a blade and its classical effect on the hover flap frequency.
+
+    Attributes
+    ----------
+    pitch_flap_coupling : float
+        ``tan(delta3)``, -.
+    lock_number : float
+        ``gamma``, -.
+    flap_frequency : float
+        Closed-form rotating flap frequency ``nu_beta`` in vacuum, per rev.
+    """
+
+    pitch_flap_coupling: float
+    lock_number: float
+    flap_frequency: float
+
+    @property
+    def delta3(self) -> float:
+        """``delta3``, rad."""
+        return math.atan(self.pitch_flap_coupling)
+
+    @property
+    def effective_flap_frequency(self) -> float:
+        """``nu_e`` (:func:`effective_flap_frequency`), per rev."""
+        return effective_flap_frequency(self.flap_frequency, self.lock_number, self.pitch_flap_coupling)
+
+    def summary(self) -> str:
+        """tan(delta3), delta3 (deg), the Lock number and nu_e, as chapter 3 prints them."""
+        return ("tan(delta3) = %.2f, delta3 = %.1f deg; Lock number %.3f; nu_e = %.3f per rev"
+                % (self.pitch_flap_coupling, math.degrees(self.delta3), self.lock_number,
+                   self.effective_flap_frequency))
+
+    def facts(self) -> dict[str, float]:
+        """tan(delta3) (as given), delta3 (deg, 0.1), K_P = -tan(delta3), nu_e and gamma (2 decimals)."""
+        k3 = self.pitch_flap_coupling
+        return {"ch3_tan_delta3": k3, "ch3_delta3_deg": round(math.degrees(self.delta3), 1),
+                "ch3_kp": round(-k3, 2), "ch3_nu_e": round(self.effective_flap_frequency, 2),
+                "ch3_lock": round(self.lock_number, 2)}
+
+
+def pitch_flap_coupling_data(params: BladeParameters) -> PitchFlapCouplingData:
+    """Pitch-flap coupling, Lock number and closed-form flap frequency of ``params``."""
+    return PitchFlapCouplingData(pitch_flap_coupling=params.pitch_flap_coupling,
+                                 lock_number=params.lock_number,
+                                 flap_frequency=closed_forms(params).flap_frequency)
+
+
+def pitch_damping_estimate(params: BladeParameters) -> float:
+    """Growth-rate change of a blade pitching alone from the pitch-damping couple, per rev.
+
+    ``rho c^3 c_mq (R^2 - R0^2) / (16 I_theta)``, with ``U = Omega r``, ``q = Omega theta'``,
+    ``R0 = R - R1`` the root radius, ``I_theta`` the pitch inertia (closed forms) and ``c`` the
+    chord at 0.75 R (the chord of an untapered blade).
+    """
+    chord = float(params.chord_at(0.75))
+    return (params.air_density * chord ** 3 * params.cm_pitch_rate
+            * (params.radius ** 2 - params.root_cutout ** 2) / (16 * closed_forms(params).pitch_inertia))
+
+
+@dataclass(frozen=True)
+class PitchDampingData:
+    """The hover pitch mode of each C.G. case with and without the pitch-damping couple.
+
+    Attributes
+    ----------
+    cases : tuple of str
+        C.G. case names (Table I).
+    with_couple, without_couple : tuple of Mode
+        The oscillatory pitch-dominated hover mode (:func:`rotorlyap.model.modes.pitch_mode`)
+        with the thin-airfoil ``cm_pitch_rate`` and with ``cm_pitch_rate = 0``; eigenvalues
+        per rev.
+    estimate : tuple of float
+        :func:`pitch_damping_estimate` of each case, per rev.
+    """
+
+    cases: tuple
+    with_couple: tuple
+    without_couple: tuple
+    estimate: tuple
+
+    def summary(self) -> str:
+        """Growth rates (3 decimals) and frequencies (2), their difference and the estimate
+        (2 decimals), per rev, as chapter 3 prints them."""
+        lines = ["hover pitch mode, growth rate (frequency) per rev:"]
+        for cg, on, off, est in zip(self.cases, self.with_couple, self.without_couple, self.estimate):
+            lines.append("%-8s C.G.: with the couple %+.3f (%.2f); without %+.3f (%.2f); "
+                         "difference %+.2f, estimate %+.2f"
+                         % (cg, on.growth_rate, on.frequency, off.growth_rate, off.frequency,
+                            on.growth_rate - off.growth_rate, est))
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, Any]:
+        """Per case the growth rates with and without the couple (3 decimals), their difference
+        and the estimate (2 decimals), per rev; how many cases decay with and without."""
+        out: dict[str, Any] = {}
+        for cg, on, off, est in zip(self.cases, self.with_couple, self.without_couple, self.estimate):
+            out["ch3_pitch_on_" + cg] = round(on.growth_rate, 3)
+            out["ch3_pitch_off_" + cg] = round(off.growth_rate, 3)
+            out["ch3_pitch_diff_" + cg] = round(on.growth_rate - off.growth_rate, 2)
+            out["ch3_pitch_est_" + cg] = round(est, 2)
+        n = len(self.cases)
+        out["ch3_n_pitch_decay_on"] = _how_many(sum(m.growth_rate < 0 for m in self.with_couple), n)
+        out["ch3_n_pitch_decay_off"] = _how_many(sum(m.growth_rate < 0 for m in self.without_couple), n)
+        return out
+
+
+def pitch_damping_data(cases: Sequence[str] = tuple(CG_POSITIONS)) -> PitchDampingData:
+    """Hover pitch mode of each Table I C.G. case with its ``cm_pitch_rate`` and with 0."""
+    on, off, est = [], [], []
+    for cg in cases:
+        p = BladeParameters.table_i(cg)
+        on.append(pitch_mode(hover_modes(p)))
+        off.append(pitch_mode(hover_modes(replace(p, cm_pitch_rate=0.0))))
+        est.append(pitch_damping_estimate(p))
+    return PitchDampingData(cases=tuple(cases), with_couple=tuple(on), without_couple=tuple(off),
+                            estimate=tuple(est))
+
+
+# --------------------------------------------------------------------------------------
 # Airfoil coefficients
 # --------------------------------------------------------------------------------------
 
@@ -351,6 +714,8 @@ class CoefficientData:
         Airfoil labels.
     cl, cd, cm : numpy.ndarray
         Coefficients, shape (n_airfoils, n); ``cm`` about each model's aerodynamic centre.
+    lift_slope : tuple of float
+        Lift-curve slope of each airfoil (its ``lift_slope``), 1/rad; NaN if it has none.
     """
 
     alpha: np.ndarray
@@ -358,6 +723,24 @@ class CoefficientData:
     cl: np.ndarray
     cd: np.ndarray
     cm: np.ndarray
+    lift_slope: tuple = ()
+
+    def summary(self) -> str:
+        """Lift, drag and moment landmarks of the first airfoil on the angle grid (to the grid
+        step), and the lift slopes, as chapter 3 prints them."""
+        cl, cd, cm = self.cl[0], self.cd[0], self.cm[0]
+        a = self.alpha
+        i0 = np.argmin(np.abs(a))
+        a0 = self.lift_slope[0] if self.lift_slope else float("nan")
+        others = "; ".join(f"{n}: the same" if s == a0 else f"{n}: {s:.3f} /rad"
+                           for n, s in zip(self.names[1:], self.lift_slope[1:]))
+        return "\n".join([
+            "%s model: cl(0) = %.3f, max cl = %.2f at %.1f deg, min cl = %.2f at %.1f deg"
+            % (self.names[0], cl[i0], cl.max(), a[cl.argmax()], cl.min(), a[cl.argmin()]),
+            "  min cd = %.4f, max cd = %.2f at %.0f deg; cm(0) = %.3f; cm from %.2f to %.2f"
+            % (cd.min(), cd.max(), a[cd.argmax()], cm[i0], cm.min(), cm.max()),
+            "  lift slope %.3f /rad = %.4f /deg" % (a0, math.radians(a0)) + (f" ({others})" if others else ""),
+        ])
 
 
 def coefficient_data(airfoils: Sequence[Any], n: int = 1441) -> CoefficientData:
@@ -371,7 +754,9 @@ def coefficient_data(airfoils: Sequence[Any], n: int = 1441) -> CoefficientData:
         cd.append(d)
         cm.append(m)
     names = tuple(getattr(a, "name", repr(a)) for a in airfoils)
-    return CoefficientData(alpha=alpha, names=names, cl=np.array(cl), cd=np.array(cd), cm=np.array(cm))
+    slopes = tuple(float(getattr(a, "lift_slope", float("nan"))) for a in airfoils)
+    return CoefficientData(alpha=alpha, names=names, cl=np.array(cl), cd=np.array(cd), cm=np.array(cm),
+                           lift_slope=slopes)
 
 
 _COEFF_LABELS = {"cl": "$c_l$", "cd": "$c_d$", "cm": "$c_m$ about the a.c."}
@@ -409,6 +794,24 @@ def plot_coefficient(data: CoefficientData, ax, coefficient: str = "cl",
         ax.legend(fontsize=7, loc="lower right")
 
 
+def figure_airfoil_coefficients(data: CoefficientData) -> Figure:
+    """c_l, c_d and c_m (rows) over the full angle range (left) and around attached flow and
+    stall, -25 to 30 deg (right), 11 x 8 in."""
+    fig = figure(figsize=(11, 8))
+    axes = fig.subplots(3, 2, sharex="col", gridspec_kw=dict(width_ratios=[1.6, 1]))
+    limits = {"cl": ((-2.0, 2.2), (-1.5, 2.0)), "cd": ((0.0, 2.2), (0.0, 0.4)),
+              "cm": ((-0.65, 0.65), (-0.1, 0.05))}
+    for i, c in enumerate(("cl", "cd", "cm")):
+        plot_coefficient(data, axes[i, 0], c, ylim=limits[c][0], legend=(i == 0))
+        plot_coefficient(data, axes[i, 1], c, alpha_range=(-25, 30), ylim=limits[c][1], legend=False)
+    for ax in axes[-1]:
+        ax.set_xlabel(r"angle of attack $\alpha$ (deg)")
+    axes[0, 0].set_title("full range", fontsize=9)
+    axes[0, 1].set_title("attached flow and stall", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
 # --------------------------------------------------------------------------------------
 # Angle of attack along the span
 # --------------------------------------------------------------------------------------
@@ -443,6 +846,22 @@ class AngleOfAttackData:
     alpha_stations: np.ndarray
     equilibrium: np.ndarray
     root_r_over_R: float
+
+    def summary(self) -> str:
+        """The stations (r/R, 3 decimals) and the angle of attack at each (deg, 0.1 deg) for
+        every case, as chapter 3 prints them."""
+        lines = [f"stations r/R: {np.round(self.stations, 3)}"]
+        for (mu, psi), a in zip(self.cases, self.alpha_stations):
+            lines.append("mu = %.2f, psi = %3.0f deg: alpha = " % (mu, psi) + str(np.round(a, 1)))
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, Any]:
+        """Angle of attack at the innermost and outermost station of the first case (hover by
+        default), deg to 0.1, and the number of stations in reverse flow (``|alpha| > 90`` deg) in
+        the last case."""
+        return {"ch3_alpha_root": round(float(self.alpha_stations[0, 0]), 1),
+                "ch3_alpha_tip": round(float(self.alpha_stations[0, -1]), 1),
+                "ch3_n_reverse": int((np.abs(self.alpha_stations[-1]) > 90).sum())}
 
 
 def angle_of_attack_data(params: BladeParameters,
@@ -500,6 +919,122 @@ def plot_angle_of_attack(data: AngleOfAttackData, ax, alpha_range: tuple[float, 
     ax.grid(alpha=0.3)
     if legend:
         ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.16, 1.0))
+
+
+def figure_angle_of_attack(data: AngleOfAttackData) -> Figure:
+    """Angle of attack along the span on the full circle (left) and zoomed on attached flow,
+    -15 to 15 deg (right), 11 x 4.2 in."""
+    fig = figure(figsize=(11, 4.2))
+    axes = fig.subplots(1, 2, gridspec_kw=dict(width_ratios=[1.3, 1]))
+    plot_angle_of_attack(data, axes[0])
+    plot_angle_of_attack(data, axes[1], alpha_range=(-15, 15), legend=False)
+    axes[0].set_title("full circle", fontsize=9)
+    axes[1].set_title("zoom on attached flow", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 3: the generated code, and the local positivity of the energy function
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class GeneratedCodeCheck:
+    """Two checks of the cached generated code against the derivation, in miniature.
+
+    Attributes
+    ----------
+    functions : tuple of str
+        Names of the generated functions.
+    hash_current : bool
+        The cached code records the hash of the current derivation.
+    mass_matrix_agrees : bool
+        The generated mass matrix at a random state equals sympy's, largest difference below
+        1e-12 of the largest entry.
+    """
+
+    functions: tuple
+    hash_current: bool
+    mass_matrix_agrees: bool
+
+    def summary(self) -> str:
+        """The functions and the two pass/fail results, as chapter 3 prints them."""
+        return "\n".join([
+            "generated functions: " + ", ".join(self.functions),
+            f"cached code matches the current derivation hash: {self.hash_current}",
+            "mass matrix at a random state, generated vs sympy, largest relative difference < 1e-12: "
+            f"{self.mass_matrix_agrees}",
+        ])
+
+
+def generated_code_check(model: Any, blade: Blade, seed: int = 1) -> GeneratedCodeCheck:
+    """Compare the cached generated code with a fresh derivation.
+
+    Parameters
+    ----------
+    model : rotorlyap.model.derivation.BladeModel
+        The symbolic model (:func:`rotorlyap.model.derivation.derive`).
+    blade : Blade
+        Supplies the parameter values and the generated mass matrix.
+    seed : int
+        Seed of the random state: angles uniform in +-0.5 rad, rates in +-1.
+    """
+    import sympy as sp
+
+    from ..model import derivation
+    from ..model._generated import blade_model as generated
+
+    rng = np.random.default_rng(seed)
+    z = np.concatenate([rng.uniform(-0.5, 0.5, 3), rng.uniform(-1, 1, 3)])
+    m_sym = sp.lambdify([*model.q, *model.params], model.M, "numpy")(*z[:3], *blade.parameter_values)
+    m_gen = blade.mass_matrix(z)
+    return GeneratedCodeCheck(
+        functions=tuple(n for n, _ in inspect.getmembers(generated, inspect.isfunction)),
+        hash_current=generated.DERIVATION_HASH == derivation.derivation_hash(),
+        mass_matrix_agrees=bool(np.abs(m_gen - m_sym).max() < 1e-12 * np.abs(m_sym).max()),
+    )
+
+
+@dataclass(frozen=True)
+class PositivityData:
+    """Local positivity of the energy function about the hover equilibrium of each C.G. case.
+
+    Attributes
+    ----------
+    cases : tuple of str
+        C.G. case names (Table I).
+    reports : tuple of rotorlyap.analysis.functions.PositivityReport
+        Eigenvalues of the Hessian of ``U`` (J/rad^2) and of ``Omega^2 M`` (J), and the verdict.
+    """
+
+    cases: tuple
+    reports: tuple
+
+    def summary(self) -> str:
+        """Extreme eigenvalues (J/rad^2 and J, to 1 or 0.1) and the verdict per case."""
+        return "\n".join(
+            "%-8s C.G.: Hessian of U, eigenvalues %7.0f to %9.0f J/rad^2; Omega^2 M, %6.1f to %9.0f J; "
+            "positive definite: %s" % (cg, r.potential_eigenvalues.min(), r.potential_eigenvalues.max(),
+                                       r.kinetic_eigenvalues.min(), r.kinetic_eigenvalues.max(),
+                                       r.positive_definite)
+            for cg, r in zip(self.cases, self.reports))
+
+    def facts(self) -> dict[str, Any]:
+        """Smallest stiffness per case (J/rad^2, to 1) and in how many cases W is positive definite."""
+        out: dict[str, Any] = {"ch3_hessU_min_" + cg: int(round(r.potential_eigenvalues.min()))
+                               for cg, r in zip(self.cases, self.reports)}
+        out["ch3_n_posdef"] = _how_many(sum(bool(r.positive_definite) for r in self.reports), len(self.cases))
+        return out
+
+
+def positivity_data(cases: Sequence[str] = tuple(CG_POSITIONS)) -> PositivityData:
+    """:meth:`EnergyFunction.positivity` about the hover equilibrium of each Table I C.G. case."""
+    reports = []
+    for cg in cases:
+        blade = Blade(BladeParameters.table_i(cg))
+        reports.append(energy_function(blade, blade.equilibrium()).positivity())
+    return PositivityData(cases=tuple(cases), reports=tuple(reports))
 
 
 # --------------------------------------------------------------------------------------
@@ -630,6 +1165,91 @@ def plot_cg_sweep(data: CGSweepData, ax, part: str = "real") -> None:
     ax.grid(alpha=0.3)
 
 
+#: The C.G. grid of chapter 4's sweep: 0.20c to 0.28c in steps of 0.01c and the three Table I
+#: cases, fractions of chord behind the leading edge.
+CG_SWEEP_GRID = np.union1d(np.round(np.arange(0.20, 0.2801, 0.01), 2), list(CG_POSITIONS.values()))
+
+
+@dataclass(frozen=True)
+class CGSweepPairData:
+    """The hover C.G. sweep with and without the aerodynamic pitch damping.
+
+    Attributes
+    ----------
+    with_damping : CGSweepData
+        With the base parameters' ``cm_pitch_rate`` (the thin-airfoil value in Table I).
+    without_damping : CGSweepData
+        With ``cm_pitch_rate = 0``.
+    """
+
+    with_damping: CGSweepData
+    without_damping: CGSweepData
+
+    def export(self) -> dict[str, np.ndarray]:
+        """Every array of both sweeps for :func:`~rotorlyap.figures.export.figure_csv`; those of
+        the second prefixed ``no_pitch_damping_``, complex eigenvalues split into ``_real`` and
+        ``_imag``."""
+        cols: dict[str, np.ndarray] = {}
+        for prefix, data in (("", self.with_damping), ("no_pitch_damping_", self.without_damping)):
+            for f in fields(data):
+                a = np.asarray(getattr(data, f.name))
+                if np.iscomplexobj(a):
+                    cols[prefix + f.name + "_real"], cols[prefix + f.name + "_imag"] = a.real, a.imag
+                else:
+                    cols[prefix + f.name] = a
+        return cols
+
+    def summary(self) -> str:
+        """Pitch-mode growth and largest real eigenvalue on the grid (per rev, 3 decimals) and the
+        boundaries (fraction of chord, 4 decimals), as chapter 4 prints them."""
+        lines = [f"C.G.: {self.with_damping.cg}"]
+        for label, s in (("with pitch damping", self.with_damping),
+                         ("without pitch damping", self.without_damping)):
+            lines += [label,
+                      f"  growth of the oscillatory pitch mode: {np.round(s.pitch_growth, 3)}",
+                      f"  largest real eigenvalue: {np.round(s.largest_real, 3)}",
+                      "  flutter from %.4f c, divergence from %.4f c (linear interpolation; nan = none on "
+                      "the grid)" % (s.flutter_cg, s.divergence_cg)]
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, float]:
+        """Divergence and flutter boundaries (fraction of chord, 3 decimals; linear interpolation
+        between grid points), the grid's ends and the pitch-mode growth at its aft end (per rev,
+        2 decimals)."""
+        s, s0 = self.with_damping, self.without_damping
+        return {"ch4_divergence_cg": round(s.divergence_cg, 3), "ch4_divergence_cg0": round(s0.divergence_cg, 3),
+                "ch4_flutter_cg0": round(s0.flutter_cg, 3),
+                "ch4_flutter0_behind_ac": round(s0.flutter_cg - s0.aerodynamic_centre, 3),
+                "ch4_grid_lo": round(float(s.cg[0]), 2), "ch4_grid_hi": round(float(s.cg[-1]), 2),
+                "ch4_pitch_grid_hi": round(float(s.pitch_growth[-1]), 2)}
+
+
+def cg_sweep_pair_data(cg_positions: Sequence[float] = CG_SWEEP_GRID,
+                       base: BladeParameters | None = None) -> CGSweepPairData:
+    """:func:`cg_sweep_data` with ``base`` (default Table I) and with its ``cm_pitch_rate = 0``."""
+    base = BladeParameters.table_i() if base is None else base
+    return CGSweepPairData(with_damping=cg_sweep_data(cg_positions, base),
+                           without_damping=cg_sweep_data(cg_positions, replace(base, cm_pitch_rate=0.0)))
+
+
+def figure_cg_sweep(data: CGSweepPairData) -> Figure:
+    """Growth rates (left) and frequencies (right) of the hover modes against the C.G. position,
+    with the pitch mode without pitch damping (dashed) and its flutter boundary, 11 x 4.4 in."""
+    s, s0 = data.with_damping, data.without_damping
+    pitch = HINGE_COLORS["pitch"]
+    fig = figure(figsize=(11, 4.4))
+    axes = fig.subplots(1, 2)
+    plot_cg_sweep(s, axes[0], "real")
+    axes[0].plot(s0.cg, s0.pitch_growth, "--", color=pitch, lw=1.3, label="pitch mode without pitch damping")
+    axes[0].axvline(s0.flutter_cg, color=pitch, lw=0.8, ls="--")
+    axes[0].text(s0.flutter_cg, 0.30, " flutter\n without\n pitch\n damping\n %.3f$c$" % s0.flutter_cg,
+                 transform=axes[0].get_xaxis_transform(), fontsize=7, va="top", color=pitch)
+    plot_cg_sweep(s, axes[1], "imag")
+    axes[0].legend(fontsize=7, loc="lower left")
+    fig.tight_layout()
+    return fig
+
+
 # --------------------------------------------------------------------------------------
 # Tables
 # --------------------------------------------------------------------------------------
@@ -682,3 +1302,590 @@ def assumption_rows(params: BladeParameters) -> list[tuple[str, str, str, str]]:
     """(field, value, unit, source) for every field whose source contains "assumed"."""
     return [(f"`{name}`", format_value(value), unit, source)
             for name, value, unit, source in parameter_table(params) if "assumed" in source]
+
+
+def table_i_markdown(params: BladeParameters) -> str:
+    """The Table I quantities of ``params`` as a Markdown table (:func:`table_i_rows`)."""
+    return markdown_table(("quantity", "field", "value", "unit"), table_i_rows(params))
+
+
+@dataclass(frozen=True)
+class AssumptionData:
+    """The fields of a parameter set whose values rest on an assumption.
+
+    Attributes
+    ----------
+    rows : tuple of (str, str, str, str)
+        (field, value, unit, source or reason) of each assumed field (:func:`assumption_rows`).
+    n_fields : int
+        Number of fields of the parameter set.
+    """
+
+    rows: tuple
+    n_fields: int
+
+    def markdown(self) -> str:
+        """The rows as a Markdown table."""
+        return markdown_table(("field", "value", "unit", "source or reason"), self.rows)
+
+    def summary(self) -> str:
+        """How many fields rest on an assumption."""
+        return "%d of %d fields rest wholly or partly on an assumption" % (len(self.rows), self.n_fields)
+
+
+def assumption_data(params: BladeParameters) -> AssumptionData:
+    """The assumed fields of ``params`` (:func:`rotorlyap.model.parameters.parameter_table`)."""
+    return AssumptionData(rows=tuple(assumption_rows(params)), n_fields=len(parameter_table(params)))
+
+
+def _airfoil_row(airfoil: Any, name: str, source: str) -> tuple[str, float, str, str]:
+    """(field, value, unit, source) with angles in deg and slopes in 1/deg, 4 decimals."""
+    v = getattr(airfoil, name)
+    if "alpha" in name or name in ("stall_blend", "reverse_stall_angle"):
+        return f"`{name}`", round(math.degrees(v), 4), "deg", source
+    if name.endswith("slope"):
+        return f"`{name}`", round(math.radians(v), 4), "1/deg", source
+    return f"`{name}`", round(v, 4), "", source
+
+
+@dataclass(frozen=True)
+class AirfoilTableData:
+    """The numbers of an airfoil model with their recorded sources, and the blade's airfoil.
+
+    Attributes
+    ----------
+    rows : tuple of (str, float, str, str)
+        (parameter, value, unit, source as recorded); angles in deg, slopes in 1/deg.
+    blade_airfoil : str
+        Name of the airfoil the blade uses.
+    aerodynamic_centre : float
+        Its moment reference, fraction of chord behind the leading edge.
+    cm_ac : float
+        Its moment coefficient about that point, -.
+    """
+
+    rows: tuple
+    blade_airfoil: str
+    aerodynamic_centre: float
+    cm_ac: float
+
+    def markdown(self) -> str:
+        """The rows as a Markdown table."""
+        return markdown_table(("parameter", "value", "unit", "source as recorded"), self.rows)
+
+    def summary(self) -> str:
+        """The blade's airfoil, its moment reference (3 decimals) and c_m there (3 decimals)."""
+        return ("model used by the blade: %s with its moment reference moved to %.3f c (Table I), cm_ac = %.3f"
+                % (self.blade_airfoil, self.aerodynamic_centre, self.cm_ac))
+
+
+def airfoil_table_data(params: BladeParameters, airfoil: Any = NACA23012,
+                       sources: Mapping[str, str] = NACA23012_SOURCES) -> AirfoilTableData:
+    """The numbers of ``airfoil`` named in ``sources`` (default the NACA 23012 model and its
+    attributions), and the airfoil of ``params``."""
+    return AirfoilTableData(rows=tuple(_airfoil_row(airfoil, n, s) for n, s in sources.items()),
+                            blade_airfoil=params.airfoil.name,
+                            aerodynamic_centre=params.airfoil.aerodynamic_centre, cm_ac=params.airfoil.cm_ac)
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 4: the readings of the missing data
+# --------------------------------------------------------------------------------------
+
+
+def pitch_axis_reading(params: BladeParameters) -> dict[str, float]:
+    """The Table I C.G. offsets read about the pitch axis instead of the aerodynamic centre
+    (this book's earlier reading), fraction of chord behind the leading edge, 3 decimals."""
+    return {cg: round(params.pitch_axis + x - params.aerodynamic_centre, 3) for cg, x in CG_POSITIONS.items()}
+
+
+@dataclass(frozen=True)
+class ChoicesData:
+    """The numbers behind the chapter's choices for the data Table I leaves out.
+
+    Attributes
+    ----------
+    tip_speed : float
+        ``Omega R``, m/s.
+    blade_mass, flap_inertia, lock_number : float
+        kg, kg m^2 (about the flap hinge), -.
+    hub_lengths : tuple of 5 float
+        e1..e5, m.
+    pitch_hinge_radius, root_cutout : float
+        ``(e1 + e3 + e4) R1`` and ``R - R1``, m.
+    chordwise_lag_angle : float
+        The lag angle a chordwise e2 would impose by centrifugal force alone, rad.
+    coning, lag : float
+        Hover equilibrium flap and lag angles (vertical e2), rad.
+    coning_without_e2 : float
+        Hover coning with ``e2 = 0``, rad.
+    pitch_flap_coupling : float
+        ``tan(delta3)``, -.
+    pitch_axis, aerodynamic_centre : float
+        Fractions of chord behind the leading edge.
+    cg_positions, cg_about_pitch_axis : dict
+        Case -> C.G. with "neutral" at the aerodynamic centre (this book) and at the pitch axis
+        (:func:`pitch_axis_reading`), fractions of chord.
+    cm_pitch_rate : float
+        The pitch-damping coefficient ``c_mq``, -.
+    """
+
+    tip_speed: float
+    blade_mass: float
+    flap_inertia: float
+    lock_number: float
+    hub_lengths: tuple
+    pitch_hinge_radius: float
+    root_cutout: float
+    chordwise_lag_angle: float
+    coning: float
+    lag: float
+    coning_without_e2: float
+    pitch_flap_coupling: float
+    pitch_axis: float
+    aerodynamic_centre: float
+    cg_positions: dict
+    cg_about_pitch_axis: dict
+    cm_pitch_rate: float
+
+    def summary(self) -> str:
+        """The two readings of e2 (deg) and of the C.G. (fractions of chord), as chapter 4
+        prints them."""
+        he = self.hub_lengths
+        deg = math.degrees
+        return "\n".join([
+            "chordwise reading of e2: lag angle atan(%.4f / %.4f) = %.2f deg from centrifugal force alone"
+            % (abs(he[1]), he[0] + he[2], deg(self.chordwise_lag_angle)),
+            "vertical reading: hover coning %.3f deg with e2 = %.4f m, %.3f deg with e2 = 0 (difference %.2f deg)"
+            % (deg(self.coning), he[1], deg(self.coning_without_e2), deg(self.coning - self.coning_without_e2)),
+            "hover lag angle with air (vertical reading): %.2f deg" % deg(self.lag),
+            "C.G. about the a.c. (%.3f c): %s; the same offsets about the pitch axis (%.2f c): %s"
+            % (self.aerodynamic_centre, ", ".join("%s %.3f c" % kv for kv in self.cg_positions.items()),
+               self.pitch_axis, ", ".join("%s %.3f c" % kv for kv in self.cg_about_pitch_axis.items())),
+        ])
+
+    def facts(self) -> dict[str, Any]:
+        """Angles in deg, lengths in m (cm for e2), mass data, the C.G. readings and c_mq, each
+        rounded as the text quotes it."""
+        he = self.hub_lengths
+        chordwise = math.degrees(self.chordwise_lag_angle)
+        out: dict[str, Any] = {
+            "ch4_chordwise_deg": round(chordwise, 1),
+            "ch4_e2_precone": round(math.degrees(self.coning - self.coning_without_e2), 2),
+            "ch4_reach": round(self.pitch_hinge_radius, 3),
+            "ch4_cutout": round(self.root_cutout, 3),
+            "ch4_mass": round(self.blade_mass, 1),
+            "ch4_I_beta": int(round(self.flap_inertia)),
+            "ch4_lag_sum": round(chordwise + math.degrees(self.lag), 0),
+            "ch4_lock": round(self.lock_number, 2),
+            "ch4_tip_speed": round(self.tip_speed, 1),
+            "ch4_ac_ahead": round(self.pitch_axis - self.aerodynamic_centre, 3),
+            "ch4_e2_cm": round(100 * abs(he[1]), 1),
+            "ch4_lag_radius": round(he[0] + he[2], 2),
+            "ch4_k3_pitch": round(-self.pitch_flap_coupling * math.degrees(self.coning), 1),
+        }
+        for cg in self.cg_positions:
+            out["ch4_cg_" + CASE_SHORT[cg]] = self.cg_positions[cg]
+            out["ch4_oldcg_" + CASE_SHORT[cg]] = self.cg_about_pitch_axis[cg]
+        out["ch4_bwd_behind_pa"] = round(self.cg_positions["backward"] - self.pitch_axis, 3)
+        out["ch4_cmq"] = round(self.cm_pitch_rate, 4)
+        return out
+
+
+def choices_data(params: BladeParameters) -> ChoicesData:
+    """The chapter's readings for ``params`` (a Table I case): mass data and the hover
+    equilibrium from :func:`rotorlyap.model.modes.derived_quantities`, with e2 as given and
+    with e2 = 0."""
+    e = params.hub_elements
+    dq = derived_quantities(params)
+    dq0 = derived_quantities(replace(params, hub_elements=(e[0], 0.0, *e[2:])))
+    return ChoicesData(
+        tip_speed=params.tip_speed, blade_mass=dq.blade_mass, flap_inertia=dq.flap_inertia,
+        lock_number=dq.lock_number, hub_lengths=tuple(params.hub_element_lengths),
+        pitch_hinge_radius=params.pitch_hinge_radius, root_cutout=params.root_cutout,
+        chordwise_lag_angle=chordwise_lag_offset_angle(params), coning=dq.equilibrium[0], lag=dq.equilibrium[1],
+        coning_without_e2=dq0.equilibrium[0], pitch_flap_coupling=params.pitch_flap_coupling,
+        pitch_axis=params.pitch_axis, aerodynamic_centre=params.aerodynamic_centre,
+        cg_positions=dict(CG_POSITIONS), cg_about_pitch_axis=pitch_axis_reading(params),
+        cm_pitch_rate=params.cm_pitch_rate)
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 4: derived quantities and hover modes of the three C.G. cases
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class HoverCasesData:
+    """Derived quantities of the Table I C.G. cases in hover (the base of the chapter 4 tables).
+
+    Attributes
+    ----------
+    cases : tuple of str
+        C.G. case names.
+    params : tuple of BladeParameters
+        ``BladeParameters.table_i(case)``.
+    quantities : tuple of DerivedQuantities
+        :func:`rotorlyap.model.modes.derived_quantities` of each.
+    """
+
+    cases: tuple
+    params: tuple
+    quantities: tuple
+
+    def __getitem__(self, case: str) -> DerivedQuantities:
+        """The derived quantities of one case."""
+        return self.quantities[self.cases.index(case)]
+
+
+def _hover_cases(cases: Sequence[str]) -> tuple[tuple, tuple, tuple]:
+    params = tuple(BladeParameters.table_i(cg) for cg in cases)
+    return tuple(cases), params, tuple(derived_quantities(p) for p in params)
+
+
+@dataclass(frozen=True)
+class DerivedTableData(HoverCasesData):
+    """The derived quantities table of chapter 4 (trim, equilibrium, blade-element theory)."""
+
+    @property
+    def gravity_droop(self) -> float:
+        """Classical gravity droop of the forward case, ``m g r_G / (I_beta Omega^2 nu_beta^2)``
+        with ``r_G`` the mid-blade radius from the flap hinge, rad."""
+        p, f = self.params[self.cases.index("forward")], self["forward"]
+        return p.blade_mass * p.gravity * (0.5 * (p.root_cutout + p.radius) - p.flap_hinge_offset) / (
+            f.flap_inertia * p.rotor_speed ** 2 * f.closed_forms.flap_frequency ** 2)
+
+    def markdown(self) -> str:
+        """One row per quantity, one column per case; angles in deg (2 decimals)."""
+        deg = math.degrees
+        q = self.quantities
+        rows = [("Lock number $\\gamma$", "-", *(round(d.lock_number, 3) for d in q)),
+                ("solidity $\\sigma = N c / (\\pi R)$", "-", *(round(d.solidity, 4) for d in q)),
+                ("hover thrust coefficient $C_T$", "-", *(round(d.thrust_coefficient, 5) for d in q)),
+                ("$C_T / \\sigma$", "-", *(round(d.ct_over_sigma, 4) for d in q)),
+                ("hover inflow ratio $\\lambda_0 = \\sqrt{C_T/2}$", "-", *(round(d.inflow_ratio, 4) for d in q)),
+                ("trimmed collective $\\theta_0$", "deg", *(round(deg(d.collective), 2) for d in q)),
+                ("coning (flap) angle $\\beta$", "deg", *(round(deg(d.equilibrium[0]), 2) for d in q)),
+                ("lag angle $\\zeta$", "deg", *(round(deg(d.equilibrium[1]), 2) for d in q)),
+                ("pitch-hinge angle $\\theta$", "deg", *(round(deg(d.equilibrium[2]), 2) for d in q)),
+                ("chord pitch to the hub plane", "deg", *(round(deg(d.chord_pitch), 2) for d in q)),
+                ("blade-element pitch for $C_T$", "deg", *(round(deg(d.blade_element_pitch), 2) for d in q)),
+                ("blade-element coning", "deg", *(round(deg(d.blade_element_coning), 2) for d in q))]
+        return markdown_table(("quantity", "unit", *(f"{CG_ROMAN[c]} {c}" for c in self.cases)), rows)
+
+    def summary(self) -> str:
+        """Mass data and thrust of the forward case, and the gravity droop estimate (deg)."""
+        f = self["forward"]
+        return "\n".join([
+            "blade mass %.2f kg, flap inertia %.1f kg m^2, lift slope %.4f /rad, rotor thrust %.0f N"
+            % (f.blade_mass, f.flap_inertia, f.lift_slope, f.thrust),
+            "gravity droop estimate m g r_G / (I_beta Omega^2 nu^2) = %.2f deg" % math.degrees(self.gravity_droop),
+        ])
+
+    def facts(self) -> dict[str, float]:
+        """The forward case's hover numbers (angles in deg) and the three collectives."""
+        deg = math.degrees
+        f = self["forward"]
+        out = {"ch4_solidity": round(f.solidity, 4), "ch4_ct": round(f.thrust_coefficient, 5),
+               "ch4_ct_sigma": round(f.ct_over_sigma, 4), "ch4_inflow": round(f.inflow_ratio, 4),
+               "ch4_beta_fwd": round(deg(f.equilibrium[0]), 2), "ch4_lag_fwd": round(deg(f.equilibrium[1]), 1),
+               "ch4_theta_fwd": round(deg(f.equilibrium[2]), 2), "ch4_chord_pitch": round(deg(f.chord_pitch), 2),
+               "ch4_bet_pitch": round(deg(f.blade_element_pitch), 2),
+               "ch4_bet_coning": round(deg(f.blade_element_coning), 2),
+               "ch4_g_droop": round(deg(self.gravity_droop), 2)}
+        out.update({"ch4_coll_" + CASE_SHORT[c]: round(deg(d.collective), 2) for c, d in zip(self.cases, self.quantities)})
+        return out
+
+
+def derived_table_data(cases: Sequence[str] = tuple(CG_POSITIONS)) -> DerivedTableData:
+    """Derived quantities of the Table I C.G. cases."""
+    return DerivedTableData(*_hover_cases(cases))
+
+
+def _mode_lines(modes: Sequence[Mode], label: str) -> list[str]:
+    """``label``, then one line per mode: eigenvalue and ``|s|`` (per rev, 4 decimals), damping
+    ratio (3) and shape (3)."""
+    lines = [label]
+    for m in modes:
+        ratio = "%7.3f" % _r4(m.damping_ratio) if m.oscillatory else "   real"
+        lines.append("  %-5s  s = %8.4f %+8.4fi   |s| = %6.4f   damping ratio %s   shape (flap, lag, pitch) = "
+                     "(%.3f, %.3f, %.3f)" % (m.dominant_hinge, _r4(m.eigenvalue.real), _r4(m.eigenvalue.imag),
+                                             m.natural_frequency, ratio, *m.shape))
+    return lines
+
+
+@dataclass(frozen=True)
+class VacuumModesData(HoverCasesData):
+    """The rotating modes in vacuum of the Table I C.G. cases, with the closed forms."""
+
+    def summary(self) -> str:
+        """Modes of each case with the closed-form frequencies (per rev), as chapter 4 prints them."""
+        lines = []
+        for cg, d in zip(self.cases, self.quantities):
+            cf = d.closed_forms
+            lines += _mode_lines(d.vacuum_modes, "%s C.G., vacuum (closed forms: flap %.4f, lag %.4f with decay "
+                                 "%.4f, pitch %.3f)" % (cg, cf.flap_frequency, cf.lag_frequency,
+                                                       cf.lag_decay_rate, cf.pitch_frequency))
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, float]:
+        """The forward case's vacuum frequencies (per rev), lag damping ratio and flap-mode
+        pitch amplitude; per case the pitch frequency above its closed form, per cent."""
+        f = self["forward"]
+        vac = {m.dominant_hinge: m for m in f.vacuum_modes}
+        out = {"ch4_nu_flap_vac": round(vac["flap"].frequency, 4),
+               "ch4_nu_lag_vac": round(vac["lag"].natural_frequency, 3),
+               "ch4_zeta_lag_vac": round(vac["lag"].damping_ratio, 2),
+               "ch4_nu_pitch_vac": round(vac["pitch"].frequency, 2),
+               "ch4_nu_pitch_cf": round(f.closed_forms.pitch_frequency, 2),
+               "ch4_flap_pitch_shape": round(vac["flap"].shape[2], 2)}
+        for cg, d in zip(self.cases, self.quantities):
+            vp = d.modes("pitch", air=False)[0]
+            out["ch4_pitch_shift_" + CASE_SHORT[cg]] = round(100 * (vp.frequency / d.closed_forms.pitch_frequency - 1), 2)
+        return out
+
+
+def vacuum_modes_data(cases: Sequence[str] = tuple(CG_POSITIONS)) -> VacuumModesData:
+    """Vacuum modes of the Table I C.G. cases."""
+    return VacuumModesData(*_hover_cases(cases))
+
+
+@dataclass(frozen=True)
+class AirModesData(HoverCasesData):
+    """The hover modes with air of the Table I C.G. cases."""
+
+    def summary(self) -> str:
+        """Modes of each case, as chapter 4 prints them."""
+        lines = []
+        for cg, d in zip(self.cases, self.quantities):
+            lines += _mode_lines(d.air_modes, "%s C.G., hover with air" % cg)
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, Any]:
+        """The forward case's flap, lag and pitch modes with air (frequencies per rev, damping
+        ratios, shapes), gamma/16 and the classical nu_e."""
+        f = self["forward"]
+        p = self.params[self.cases.index("forward")]
+        fl = {m.dominant_hinge: m for m in f.air_modes}
+        nu_e = effective_flap_frequency(f.closed_forms.flap_frequency, f.lock_number, p.pitch_flap_coupling)
+        return {"ch4_flap_air": round(fl["flap"].natural_frequency, 2),
+                "ch4_flap_air_zeta": round(fl["flap"].damping_ratio, 2),
+                "ch4_pitch_air": round(fl["pitch"].frequency, 2),
+                "ch4_pitch_air_zeta": round(fl["pitch"].damping_ratio, 3),
+                "ch4_gamma16": round(f.lock_number / 16, 2),
+                "ch4_nu_e": round(nu_e, 2),
+                "ch4_flap_air_shape": "(%.2f, %.2f, %.2f)" % fl["flap"].shape,
+                "ch4_lag_air_zeta": round(fl["lag"].damping_ratio, 2),
+                "ch4_lag_air_flap": round(fl["lag"].shape[0], 2)}
+
+
+def air_modes_data(cases: Sequence[str] = tuple(CG_POSITIONS)) -> AirModesData:
+    """Hover modes with air of the Table I C.G. cases."""
+    return AirModesData(*_hover_cases(cases))
+
+
+@dataclass(frozen=True)
+class HoverStabilityData(HoverCasesData):
+    """Linear hover stability of the Table I C.G. cases: pitch mode and least-damped mode."""
+
+    def summary(self) -> str:
+        """Verdict, pitch-mode eigenvalue and largest growth rate (per rev, 3 decimals) per case."""
+        lines = []
+        for cg, p, d in zip(self.cases, self.params, self.quantities):
+            pm, sm = pitch_mode(d.air_modes), least_damped(d.air_modes)
+            lines.append("%-8s C.G. %.3fc: %s; pitch mode s = %.3f %+.3fi; largest growth rate %.3f (%s)"
+                         % (cg, p.cg_position, "linearly stable" if not d.unstable_air_modes else "UNSTABLE",
+                            _r3(pm.eigenvalue.real), _r3(pm.eigenvalue.imag), _r3(sm.growth_rate), _kind(sm)))
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, Any]:
+        """Per case the pitch mode (growth rate, frequency per rev and damping ratio, 2 decimals)
+        and the largest growth rate (3 decimals); the backward case's slowest mode shape and
+        its halving time, rev."""
+        out: dict[str, Any] = {}
+        for cg, d in zip(self.cases, self.quantities):
+            pm, sm = pitch_mode(d.air_modes), least_damped(d.air_modes)
+            s = CASE_SHORT[cg]
+            out["ch4_pitch_" + s] = round(pm.growth_rate, 2)
+            out["ch4_pitchf_" + s] = round(pm.frequency, 2)
+            out["ch4_pitchz_" + s] = round(pm.damping_ratio, 2)
+            out["ch4_slow_" + s] = _r3(sm.growth_rate)
+        sm = least_damped(self["backward"].air_modes)
+        out["ch4_slow_bwd_shape"] = "(%.2f, %.2f, %.2f)" % sm.shape
+        out["ch4_slow_bwd_halving"] = int(round(math.log(2) / -sm.growth_rate))
+        return out
+
+
+def hover_stability_data(cases: Sequence[str] = tuple(CG_POSITIONS)) -> HoverStabilityData:
+    """Hover stability of the Table I C.G. cases."""
+    return HoverStabilityData(*_hover_cases(cases))
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 4: what the hover stability rests on
+# --------------------------------------------------------------------------------------
+
+#: The two readings of the C.G. positions: (label, short name in the glue names).
+READINGS = (("a.c.", "ac"), ("pitch axis", "pa"))
+#: The two pitch dampings: (label, ``cm_pitch_rate``, short name in the glue names).
+DAMPINGS = (("thin airfoil", THIN_AIRFOIL_CM_Q, "q"), ("none", 0.0, "0"))
+
+
+@dataclass(frozen=True)
+class SensitivityCase:
+    """The hover modes of one C.G. case under one reading and one pitch damping.
+
+    Attributes
+    ----------
+    reading : str
+        "a.c." or "pitch axis": what "neutral" C.G. is read as.
+    damping : str
+        "thin airfoil" or "none".
+    case : str
+        C.G. case name.
+    cg_position : float
+        Fraction of chord behind the leading edge.
+    cm_pitch_rate : float
+        ``c_mq``, -.
+    pitch_mode, least_damped : Mode
+        The oscillatory pitch-dominated mode and the mode of largest growth rate, per rev.
+    """
+
+    reading: str
+    damping: str
+    case: str
+    cg_position: float
+    cm_pitch_rate: float
+    pitch_mode: Mode
+    least_damped: Mode
+
+    @property
+    def glue_key(self) -> str:
+        """``ch4_s_<reading>_<damping>_<case>``, e.g. ``ch4_s_ac_q_fwd``."""
+        r = dict(READINGS)[self.reading]
+        d = {name: short for name, _, short in DAMPINGS}[self.damping]
+        return f"ch4_s_{r}_{d}_{CASE_SHORT[self.case]}"
+
+
+@dataclass(frozen=True)
+class SensitivityData:
+    """Hover stability of the three C.G. cases under both readings of "neutral" and with and
+    without the aerodynamic pitch damping (twelve cases).
+
+    Attributes
+    ----------
+    rows : tuple of SensitivityCase
+    """
+
+    rows: tuple
+
+    def summary(self) -> str:
+        """One line per case: pitch-mode growth rate and largest growth rate (per rev, 3
+        decimals), the latter's mode and the verdict."""
+        lines = ["%-10s  %-19s  %-8s  %-6s  %-15s  %-42s  %s" % (
+            "C.G. about", "pitch damping c_m_q", "case", "C.G./c", "pitch mode Re s", "largest Re s (its mode)",
+            "hover")]
+        for r in self.rows:
+            pm, sm = r.pitch_mode, r.least_damped
+            lines.append("%-10s  %-19s  %-8s  %-6.3f  %+-15.3f  %-42s  %s" % (
+                r.reading, "%s %.3f" % (r.damping, r.cm_pitch_rate) if r.cm_pitch_rate else "none 0", r.case,
+                r.cg_position, _r3(pm.growth_rate), "%+.3f (%s)" % (_r3(sm.growth_rate), _kind(sm)),
+                "unstable" if sm.unstable else "stable"))
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, float]:
+        """Per case the pitch-mode and largest growth rates (per rev, 3 decimals); the forward
+        case's pitch damping ratio without pitch damping."""
+        out: dict[str, float] = {}
+        for r in self.rows:
+            out[r.glue_key + "_pitch"] = _r3(r.pitch_mode.growth_rate)
+            out[r.glue_key + "_max"] = _r3(r.least_damped.growth_rate)
+        ref = next(r for r in self.rows if r.reading == "a.c." and r.damping == "none" and r.case == "forward")
+        out["ch4_pitch_air_zeta0"] = _r3(ref.pitch_mode.damping_ratio)
+        return out
+
+
+def sensitivity_data(base: BladeParameters | None = None) -> SensitivityData:
+    """Hover modes of ``base`` (default Table I) for each reading, pitch damping and C.G. case,
+    in that order of loops."""
+    base = BladeParameters.table_i() if base is None else base
+    readings = {"a.c.": dict(CG_POSITIONS), "pitch axis": pitch_axis_reading(base)}
+    rows = []
+    for reading, _ in READINGS:
+        for damping, cmq, _ in DAMPINGS:
+            for cg, x in readings[reading].items():
+                modes = hover_modes(replace(base, cg_position=x, cm_pitch_rate=cmq))
+                rows.append(SensitivityCase(reading=reading, damping=damping, case=cg, cg_position=x,
+                                            cm_pitch_rate=cmq, pitch_mode=pitch_mode(modes),
+                                            least_damped=least_damped(modes)))
+    return SensitivityData(rows=tuple(rows))
+
+
+@dataclass(frozen=True)
+class VariantsData:
+    """One C.G. case with one ingredient changed at a time, with and without pitch damping.
+
+    Attributes
+    ----------
+    case : str
+        C.G. case name.
+    cg_position : float
+        Fraction of chord behind the leading edge.
+    labels : tuple of str
+        The variants, the first the unchanged Table I blade.
+    pitch_growth : numpy.ndarray
+        Growth rate of the oscillatory pitch-dominated mode, per rev, shape (n_variants, 2):
+        with the thin-airfoil pitch damping, without.
+    largest_real : numpy.ndarray
+        Largest real eigenvalue, per rev, same shape; NaN where all are complex.
+    lag_stiffness : float
+        The lag spring of the lag-spring variant, N m/rad.
+    """
+
+    case: str
+    cg_position: float
+    labels: tuple
+    pitch_growth: np.ndarray
+    largest_real: np.ndarray
+    lag_stiffness: float
+
+    def summary(self) -> str:
+        """Growth rates per variant (per rev, 3 decimals), as chapter 4 prints them."""
+        lines = ["%s C.G. (%.3f c): growth rates per rev" % (self.case, self.cg_position)]
+        for label, pg, lr in zip(self.labels, self.pitch_growth, self.largest_real):
+            out = ["%s: pitch mode %+.3f, largest real %s" % (name, _r3(g), "none" if np.isnan(x) else "%+.3f" % _r3(x))
+                   for name, g, x in zip(("pitch damping", "none"), pg, lr)]
+            lines.append("  %-52s %s" % (label, "; ".join(out)))
+        return "\n".join(lines)
+
+    def facts(self) -> dict[str, float]:
+        """The largest real eigenvalue of the unchanged blade with and without pitch damping,
+        per rev, 3 decimals."""
+        return {"ch4_bwd_real_q": _r3(self.largest_real[0, 0]), "ch4_bwd_real_0": _r3(self.largest_real[0, 1])}
+
+
+def variants_data(case: str = "backward", lag_frequency: float = 0.6, reference: str = "forward") -> VariantsData:
+    """Hover modes of the Table I ``case`` unchanged, without pitch-flap coupling, with a lag
+    spring for ``lag_frequency`` per rev, and with the wind point at 0.75 c.
+
+    The lag spring is ``(nu^2 - nu_zeta^2) I_zeta Omega^2`` with the closed-form lag frequency
+    and inertia of the ``reference`` case (the chordwise C.G. hardly changes them).
+    """
+    params = BladeParameters.table_i(case)
+    cf = derived_quantities(BladeParameters.table_i(reference)).closed_forms
+    k_lag = (lag_frequency ** 2 - cf.lag_frequency ** 2) * cf.lag_inertia * params.rotor_speed ** 2
+    variants = [("Table I", {}), ("no pitch-flap coupling, tan(delta3) = 0", {"pitch_flap_coupling": 0.0}),
+                ("lag spring for nu_zeta = %.1f/rev (K = %.0f N m/rad)" % (lag_frequency, k_lag),
+                 {"lag_stiffness": k_lag}),
+                ("wind point at 0.75 c", {"wind_point": 0.75})]
+    growth = np.full((len(variants), len(DAMPINGS)), np.nan)
+    real = np.full_like(growth, np.nan)
+    for i, (_, change) in enumerate(variants):
+        for j, (_, cmq, _) in enumerate(DAMPINGS):
+            modes = hover_modes(replace(params, cm_pitch_rate=cmq, **change))
+            growth[i, j] = pitch_mode(modes).growth_rate
+            reals = [m.growth_rate for m in modes if not m.oscillatory]
+            if reals:
+                real[i, j] = max(reals)
+    return VariantsData(case=case, cg_position=params.cg_position, labels=tuple(label for label, _ in variants),
+                        pitch_growth=growth, largest_real=real, lag_stiffness=k_lag)

@@ -36,7 +36,6 @@ def regenerate_figures(out: Path, *, quick: bool = False,
     import matplotlib
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
 
     from . import paper
     from .export import figure_csv
@@ -51,37 +50,25 @@ def regenerate_figures(out: Path, *, quick: bool = False,
 
     def fig4():
         data = paper.hover_trim_data(cg_sweep)
-        fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-        paper.plot_hover_trim(data, axes)
-        return {"fig4_hover_trim": (data, fig)}
+        return {"fig4_hover_trim": (data, paper.figure_hover_trim(data))}
 
     def fig5():
         data = paper.hover_rate_data(cg_sweep)
-        fig, axes = plt.subplots(2, 2, figsize=(11.5, 8.6))
-        paper.plot_hover_rate(data, axes.ravel())
-        return {"fig5_hover_rate": (data, fig)}
+        return {"fig5_hover_rate": (data, paper.figure_hover_rate(data))}
 
     def fig6():
         data = paper.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0, 4.0, 8.0), n_psi=n_psi)
-        fig, axes = plt.subplots(1, 2, figsize=(11.5, 4.3), gridspec_kw=dict(width_ratios=(1.6, 1)))
-        paper.plot_w_spheres(data, axes)
-        return {"fig6_w_spheres": (data, fig)}
+        return {"fig6_w_spheres": (data, paper.figure_w_spheres(data))}
 
     def fig7():
         data = paper.rate_azimuth_data("forward", mu7, n_psi=n_psi)
-        fig, axes = plt.subplots(1, 2, figsize=(12, 4.3), sharey=True)
-        paper.plot_rate_azimuth(data, axes)
-        return {"fig7_rate_azimuth": (data, fig)}
+        return {"fig7_rate_azimuth": (data, paper.figure_rate_azimuth(data))}
 
     def fig8():
         made = {}
         for reading, mus in (("practical", mu_grid), ("strict", mu_strict)):
             data = paper.regions_data(cases, mus, reading=reading, n_psi=n_psi)
-            fig = plt.figure(figsize=(4.6 * len(cases), 5.0))
-            for k in range(len(cases)):
-                ax = fig.add_subplot(1, len(cases), k + 1, projection="polar")
-                paper.plot_regions_polar(data, ax, k, title=f"{cases[k]} C.G.\n{data.label}")
-                ax.title.set_y(1.12)
+            fig = paper.figure_regions_polar(data, figsize=(max(4.6 * len(cases), 11.0), 6.2))
             made[f"fig8_regions_{reading}"] = (data, fig)
         return made
 
@@ -94,8 +81,6 @@ def regenerate_figures(out: Path, *, quick: bool = False,
             progress(i, len(steps), label)
         for name, (data, fig) in make().items():
             png = out / f"{name}.png"
-            fig.tight_layout()
             fig.savefig(png, dpi=120)
-            plt.close(fig)
             written += [png, Path(figure_csv(data, out / f"{name}.csv"))]
     return written

@@ -3,7 +3,12 @@ function each.
 
 Data functions return frozen dataclasses of arrays (no plotting) and take their grids as
 arguments, so that the notebooks, the benchmark and the tests can choose the resolution;
-drawing functions take that data and matplotlib ``Axes``. Every quantity computed in a
+drawing functions (``plot_*``) take that data and matplotlib ``Axes``, and ``figure_*``
+functions create, draw, lay out and return the whole figure of a chapter (closed in pyplot,
+so that a notebook shows it only where it is glued). The data objects of chapters 5 and 6
+have a ``summary()`` (the text its chapter prints, rounded to the digits the computation
+determines) and a ``facts()`` (the numbers its chapter quotes, ``{glue name: value}``, for
+:func:`rotorlyap.figures.export.glue_facts`). Every quantity computed in a
 reading carries that reading's label, :data:`READING_LABELS`: the strict reading (suprema
 and infima over whole spheres, the theorem as stated) is a certificate as far as the search
 is exhaustive; the practical reading (``W`` and ``W'`` only along test disturbances) is an
@@ -19,28 +24,42 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ..analysis.functions import energy_function, energy_rate_terms
 from ..analysis.stability import blade_stability
 from ..conventions import DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
+from ..errors import TrimError
 from ..methods.sampling import sphere_extremum, unit_sphere_points
 from ..model.blade import Blade
+from ..model.modes import Mode, hover_modes, least_damped, pitch_mode
 from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.trim import hover_trim
-from .export import markdown_table  # noqa: F401  (chapter 6 writes its tables with it)
-from .style import CATEGORY_COLORS
+from ..reporting import decade_above
+from .export import markdown_table  # the claims table; also re-exported for the chapters
+from .style import CATEGORY_COLORS, figure, subplots
 
 __all__ = [
     "READING_LABELS", "CASES", "MU_GRID", "MU_GRID_STRICT", "STATE_LABELS",
-    "FLAP_LAG_TEST_DISTURBANCES", "AXES_AND_DIAGONALS",
-    "case_params", "balanced_scales", "practical_threshold_mu", "reverse_flow_boundary",
-    "HoverTrimData", "hover_trim_data", "plot_hover_trim",
-    "HoverRateData", "hover_rate_data", "plot_hover_rate",
-    "WSpheresData", "w_spheres_data", "plot_w_spheres",
-    "RateAzimuthData", "rate_azimuth_data", "plot_rate_azimuth",
+    "FLAP_LAG_TEST_DISTURBANCES", "AXES_AND_DIAGONALS", "THRESHOLD_TEST_SETS",
+    "case_params", "cg_sweep", "balanced_scales", "practical_threshold_mu", "reverse_flow_boundary",
+    "disturbance_names", "category_legend_handles",
+    "HoverSweep", "hover_sweep",
+    "HoverTrimData", "hover_trim_data", "plot_hover_trim", "figure_hover_trim",
+    "TrimLimitData", "trim_limit_data",
+    "HoverModesData", "hover_modes_data",
+    "HoverReadingsData", "hover_readings_data", "SearchCheckData", "search_check",
+    "HoverRateData", "hover_rate_data", "plot_hover_rate", "figure_hover_rate",
+    "HoverDivergenceData", "hover_divergence_data",
+    "UnbalancedLoadsData", "unbalanced_loads_data",
+    "WSpheresData", "w_spheres_data", "plot_w_spheres", "figure_w_spheres",
+    "RateAzimuthData", "rate_azimuth_data", "plot_rate_azimuth", "figure_rate_azimuth",
     "RegionsData", "regions_data", "plot_regions_polar", "plot_regions_plane",
-    "CATEGORY_NAMES", "SensitivityData", "sensitivity_data", "plot_sensitivity",
-    "ConvergenceData", "convergence_data", "plot_convergence",
+    "RegionMaps", "region_maps", "figure_regions_polar", "figure_regions_plane",
+    "HoverFlutterCheck", "hover_flutter_check", "ThresholdData", "practical_threshold_data",
+    "CATEGORY_NAMES", "SensitivityData", "sensitivity_data", "plot_sensitivity", "figure_sensitivity",
+    "ConvergenceData", "convergence_data", "plot_convergence", "figure_convergence",
+    "CLAIMS_HEADER", "ClaimsTable", "claims_table",
     "markdown_table",
 ]
 
@@ -127,6 +146,110 @@ def reverse_flow_boundary(params: BladeParameters, psi: np.ndarray) -> np.ndarra
         return np.where(s > 1e-12, params.root_r_over_R / np.where(s > 1e-12, s, 1.0), np.inf)
 
 
+def cg_sweep(step: float = 0.01, n_side: int = 4) -> np.ndarray:
+    """C.G. positions from ``n_side`` steps ahead of the neutral C.G. to ``n_side`` behind it.
+
+    Parameters
+    ----------
+    step : float
+        Spacing, fraction of chord.
+    n_side : int
+        Steps on either side of the neutral C.G.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``2 n_side + 1`` positions, fraction of chord behind the leading edge, rounded to
+        0.001 c (the sweep is an input, stated exactly).
+    """
+    return np.round(CG_POSITIONS["neutral"] + step * np.arange(-n_side, n_side + 1), 3)
+
+
+def disturbance_names(test_disturbances) -> tuple[str, ...]:
+    """TeX names (without ``$``) of test disturbances along signed axes, ``"+\\beta'"`` etc.
+
+    Each direction is named after its largest component and that component's sign.
+    """
+    names = []
+    for d in np.asarray(test_disturbances, dtype=float):
+        k = int(np.argmax(np.abs(d)))
+        names.append(("+" if d[k] > 0 else "-") + STATE_LABELS[k].strip("$"))
+    return tuple(names)
+
+
+def _line(*parts) -> str:
+    """One printed line, the way ``print(*parts)`` writes it."""
+    return " ".join(str(p) for p in parts)
+
+
+def category_legend_handles(reverse_flow_label: str = "reverse flow reaches the blade root") -> list:
+    """Legend handles of the region maps: one patch per :data:`CATEGORY_NAMES`, and the hatch
+    of the reverse-flow region."""
+    from matplotlib.patches import Patch
+
+    handles = [Patch(color=c, label=n) for c, n in zip(CATEGORY_COLORS, CATEGORY_NAMES)]
+    handles.append(Patch(facecolor="none", edgecolor="k", hatch="///", label=reverse_flow_label))
+    return handles
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 5: the inputs
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class HoverSweep:
+    """The inputs of the hover chapter: the cases, the C.G. sweep, the sphere and the readings.
+
+    Attributes
+    ----------
+    cg : numpy.ndarray
+        C.G. positions of the sweep, fraction of chord behind the leading edge, (k,).
+    case_names : tuple of str
+        The paper's cases.
+    case_cg : numpy.ndarray
+        Their C.G. positions, fraction of chord, (3,).
+    A : float
+        Radius of the sphere ``||x|| = A`` examined (scaled norm), -.
+    scales : numpy.ndarray
+        Norm scales ``a_i``: rad for the angles, rad/rad for the rates, (6,).
+    """
+
+    cg: np.ndarray
+    case_names: tuple
+    case_cg: np.ndarray
+    A: float
+    scales: np.ndarray
+
+    def summary(self) -> str:
+        """The cases, the sweep, the scales (deg, deg/rad), ``A`` and the readings' labels."""
+        lines = [
+            "C.G. of the cases (c): " + ", ".join(f"{k} {c:.3f}" for k, c in zip(self.case_names, self.case_cg)),
+            _line("C.G. sweep (c):", self.cg),
+            _line("scales a_i (deg, deg/rad):", np.round(np.degrees(self.scales), 2), "; A =", self.A),
+        ]
+        lines += [f"{k:>9}: {v}" for k, v in READING_LABELS.items()]
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """``ch5_cg_<case>`` (fraction of chord) and the ends of the sweep ``ch5_sweep_lo/hi``."""
+        out = {f"ch5_cg_{name}": round(float(c), 3) for name, c in zip(self.case_names, self.case_cg)}
+        out["ch5_sweep_lo"] = float(self.cg[0])
+        out["ch5_sweep_hi"] = float(self.cg[-1])
+        return out
+
+
+def hover_sweep(step: float = 0.01, n_side: int = 4, *, cases=CASES, A: float = DEFAULT_A,
+                scales=None) -> HoverSweep:
+    """The hover chapter's inputs: :func:`cg_sweep` ``(step, n_side)``, the cases, ``A`` and the
+    scales (default :data:`rotorlyap.conventions.DEFAULT_SCALES`)."""
+    return HoverSweep(
+        cg=cg_sweep(step, n_side), case_names=tuple(cases),
+        case_cg=np.array([CG_POSITIONS[c] for c in cases]), A=float(A),
+        scales=np.array(DEFAULT_SCALES if scales is None else scales, dtype=float),
+    )
+
+
 # --------------------------------------------------------------------------------------
 # Fig. 4: hover trim
 # --------------------------------------------------------------------------------------
@@ -174,6 +297,51 @@ class HoverTrimData:
     aerodynamic_centre: float
     thrust_coefficient: float
     inflow: float
+
+    @property
+    def max_trim_error(self) -> float:
+        """Largest ``|thrust - weight|`` over the sweep and the cases, N."""
+        return float(np.abs(np.concatenate([self.thrust, self.case_thrust]) - self.weight).max())
+
+    def summary(self) -> str:
+        """The cases' collective and equilibrium angles (deg) with the trim check, the sweep's
+        collective and pitch angle (deg), the weight, ``C_T``, ``lambda_0`` and the marked
+        chordwise positions."""
+        lines = ["case       C.G.    collective  beta   zeta   theta (deg)   thrust - weight (N)"]
+        for i, name in enumerate(self.case_names):
+            ok = abs(self.case_thrust[i] - self.weight) < 1e-6
+            lines.append(f"{name:9s}  {self.case_cg[i]:.3f}  {np.degrees(self.case_collective[i]):8.2f}  "
+                         + "  ".join(f"{v:5.2f}" for v in np.degrees(self.case_equilibrium[i]))
+                         + f"   {'below 1e-6' if ok else 'TRIM ERROR'}")
+        lines += [
+            _line("sweep collective (deg):", np.round(np.degrees(self.collective), 2)),
+            _line("sweep theta (deg):     ", np.round(np.degrees(self.equilibrium[:, 2]), 3)),
+            "weight %.1f N; |thrust - weight| < 1e-6 N for every trim: %s; C_T = %.5f, lambda_0 = %.4f" % (
+                self.weight, self.max_trim_error < 1e-6, self.thrust_coefficient, self.inflow),
+            "pitch axis %.3f c, aerodynamic centre %.3f c" % (self.pitch_axis, self.aerodynamic_centre),
+        ]
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Chapter 5's trim numbers: ``ch5_col_<case>``, ``ch5_beta/zeta/theta_<case>`` (deg, 0.01),
+        ``ch5_eq_spread`` (largest spread of an equilibrium angle over the cases, deg),
+        ``ch5_weight`` (kN), ``ch5_ct``, ``ch5_lambda0``, ``ch5_pitch_axis`` and ``ch5_ac``
+        (fraction of chord) and ``ch5_col_slope`` (collective change per 0.01 c of C.G., deg,
+        from a straight-line fit over the sweep)."""
+        out = {}
+        for i, name in enumerate(self.case_names):
+            out[f"ch5_col_{name}"] = round(float(np.degrees(self.case_collective[i])), 2)
+            for j, q in enumerate(("beta", "zeta", "theta")):
+                out[f"ch5_{q}_{name}"] = round(float(np.degrees(self.case_equilibrium[i, j])), 2)
+        out["ch5_eq_spread"] = round(float(np.degrees(np.ptp(self.case_equilibrium, axis=0)).max()), 2)
+        out["ch5_weight"] = round(self.weight / 1000, 2)
+        out["ch5_ct"] = round(self.thrust_coefficient, 5)
+        out["ch5_lambda0"] = round(self.inflow, 4)
+        out["ch5_pitch_axis"] = round(self.pitch_axis, 3)
+        out["ch5_ac"] = round(self.aerodynamic_centre, 3)
+        slope = np.polyfit(self.cg, np.degrees(self.collective), 1)[0] / 100
+        out["ch5_col_slope"] = round(float(slope), 3)
+        return out
 
 
 def hover_trim_data(cg_values=np.linspace(0.195, 0.275, 9), cases=CASES, **overrides) -> HoverTrimData:
@@ -227,6 +395,239 @@ def plot_hover_trim(data: HoverTrimData, axes) -> None:
     ax2.set_ylabel("angle (deg)")
     ax2.set_title("C.G. sweep", fontsize=10)
     ax2.legend(fontsize=7.5, loc="lower left")
+
+
+def figure_hover_trim(data: HoverTrimData, figsize=(11, 4.2)):
+    """The book's Fig. 4 (:func:`plot_hover_trim` on two panels), laid out; returns the Figure."""
+    fig, axes = subplots(1, 2, figsize=figsize)
+    plot_hover_trim(data, axes)
+    fig.tight_layout()
+    return fig
+
+
+@dataclass(frozen=True)
+class TrimLimitData:
+    """The aft end of the C.G.s that :func:`rotorlyap.model.trim.hover_trim` can trim.
+
+    Behind it the branch of equilibria that starts at the unloaded blade already gives more
+    thrust than the weight at zero collective, and the trim (positive collective only) fails.
+
+    Attributes
+    ----------
+    cg_limit : float
+        Largest C.G. found trimmable: the front end of the final bisection bracket, fraction
+        of chord.
+    cg_untrimmable : float
+        Its back end (not trimmable), fraction of chord.
+    tol : float
+        Width of the final bracket, fraction of chord.
+    """
+
+    cg_limit: float
+    cg_untrimmable: float
+    tol: float
+
+    def summary(self) -> str:
+        """The limit, to 0.001 c."""
+        return "hover trim with positive collective exists up to a C.G. of %.3f c" % self.cg_limit
+
+    def facts(self) -> dict:
+        """``ch5_trim_limit`` (fraction of chord, 0.001)."""
+        return {"ch5_trim_limit": round(self.cg_limit, 3)}
+
+
+def trim_limit_data(cg_lo: float, cg_hi: float = 0.30, *, tol: float = 1e-4, **overrides) -> TrimLimitData:
+    """Bisect for the aft end of the trimmable C.G.s between ``cg_lo`` and ``cg_hi``.
+
+    Parameters
+    ----------
+    cg_lo, cg_hi : float
+        A trimmable and an untrimmable C.G., fraction of chord.
+    tol : float
+        Width of the final bracket, fraction of chord.
+    **overrides
+        Further :class:`~rotorlyap.model.parameters.BladeParameters` fields.
+
+    Raises
+    ------
+    ValueError
+        If ``cg_lo`` cannot be trimmed or ``cg_hi`` can (no limit between them).
+    """
+    def trims(cg: float) -> bool:
+        try:
+            hover_trim(case_params(float(cg), **overrides))
+            return True
+        except TrimError:
+            return False
+
+    lo, hi = float(cg_lo), float(cg_hi)
+    if not trims(lo) or trims(hi):
+        raise ValueError(f"trim_limit_data: need a trimmable cg_lo and an untrimmable cg_hi, got {lo:g}, {hi:g}")
+    while hi - lo > tol:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if trims(mid) else (lo, mid)
+    return TrimLimitData(cg_limit=lo, cg_untrimmable=hi, tol=float(tol))
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 5: linear modes in hover
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class HoverModesData:
+    """Linear modes of the cases at their hover equilibria, with and without the aerodynamic
+    pitch damping (:func:`rotorlyap.model.modes.hover_modes`).
+
+    Eigenvalues are per radian of azimuth (units of Omega); each complex pair counts once.
+
+    Attributes
+    ----------
+    case_names : tuple of str
+    case_cg : numpy.ndarray
+        Fraction of chord, (3,).
+    modes : tuple of tuple of rotorlyap.model.modes.Mode
+        Per case, least damped (largest growth rate) first.
+    modes_without_pitch_damping : tuple of tuple of rotorlyap.model.modes.Mode
+        The same with ``cm_pitch_rate = 0``.
+    """
+
+    case_names: tuple
+    case_cg: np.ndarray
+    modes: tuple
+    modes_without_pitch_damping: tuple
+
+    def _index(self, case: str) -> int:
+        return self.case_names.index(case)
+
+    def least_damped(self, case: str) -> Mode:
+        """The mode with the largest growth rate of ``case``."""
+        return least_damped(self.modes[self._index(case)])
+
+    def pitch(self, case: str, pitch_damping: bool = True) -> Mode:
+        """The pitch mode of ``case`` (:func:`rotorlyap.model.modes.pitch_mode`)."""
+        modes = self.modes if pitch_damping else self.modes_without_pitch_damping
+        return pitch_mode(modes[self._index(case)])
+
+    def decay_revolutions(self, case: str) -> float:
+        """Revolutions in which the least-damped mode of ``case`` decays by a factor e, rev."""
+        return 1.0 / (2 * np.pi * abs(self.least_damped(case).growth_rate))
+
+    def summary(self, decay_case: str = "backward") -> str:
+        """The modes table (eigenvalue; sizes of the flap, lag and pitch angles, largest = 1),
+        the decay time of ``decay_case``'s least-damped mode and the pitch modes without the
+        aerodynamic pitch damping (3 decimals per rev)."""
+        lines = ["case       C.G.   eigenvalue (per rad of azimuth, i.e. in Omega; freq. in /rev)   "
+                 "|beta| |zeta| |theta|"]
+        for name, cg, modes in zip(self.case_names, self.case_cg, self.modes):
+            for m in modes:
+                z, s = m.eigenvalue, m.shape
+                kind = "real root" if z.imag == 0 else "pair"
+                lines.append(f"{name:9s}  {cg:.3f}  {z.real:+.3f} {'+-' if z.imag else '  '} {z.imag:.3f}j  {kind:9s}"
+                             f"                   {s[0]:4.2f}   {s[1]:4.2f}   {s[2]:4.2f}")
+        lines.append(f"{decay_case} C.G.: the least-damped mode decays by a factor e in "
+                     f"{self.decay_revolutions(decay_case):.0f} rev")
+        lines.append("pitch mode without the aerodynamic pitch damping (cm_pitch_rate = 0), real part:")
+        for name in self.case_names:
+            z = self.pitch(name, pitch_damping=False).eigenvalue
+            lines.append(f"  {name:9s} {z.real:+.3f} +- {z.imag:.3f}j")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Chapter 5's linear numbers (per rev): ``ch5_re_<case>`` (least-damped growth rate),
+        ``ch5_pitch_re_<case>`` and ``ch5_pitch_freq_<case>`` (pitch mode),
+        ``ch5_freq_forward`` and ``ch5_lag_share_forward`` (frequency of the forward C.G.'s
+        least-damped mode and the larger of its flap and pitch parts), ``ch5_tau_backward``
+        (rev, :meth:`decay_revolutions`) and ``ch5_pitch_re0_<case>`` (pitch mode without the
+        aerodynamic pitch damping)."""
+        out = {}
+        for name in self.case_names:
+            pm = self.pitch(name)
+            out[f"ch5_re_{name}"] = round(float(self.least_damped(name).growth_rate), 3)
+            out[f"ch5_pitch_re_{name}"] = round(float(pm.growth_rate), 2)
+            out[f"ch5_pitch_freq_{name}"] = round(float(pm.frequency), 2)
+        fwd = self.least_damped("forward")
+        out["ch5_freq_forward"] = round(float(fwd.frequency), 3)
+        out["ch5_lag_share_forward"] = round(float(max(fwd.shape[0], fwd.shape[2])), 2)
+        out["ch5_tau_backward"] = round(float(self.decay_revolutions("backward")))
+        for name in self.case_names:
+            out[f"ch5_pitch_re0_{name}"] = round(float(self.pitch(name, pitch_damping=False).growth_rate), 3)
+        return out
+
+
+def hover_modes_data(cases=CASES) -> HoverModesData:
+    """Linear modes in hover of each case, with the aerodynamic pitch damping and without it
+    (``cm_pitch_rate = 0``)."""
+    def ordered(params):
+        return tuple(sorted(hover_modes(params), key=lambda m: -m.growth_rate))
+
+    return HoverModesData(
+        case_names=tuple(cases), case_cg=np.array([CG_POSITIONS[c] for c in cases]),
+        modes=tuple(ordered(case_params(c)) for c in cases),
+        modes_without_pitch_damping=tuple(ordered(case_params(c, cm_pitch_rate=0.0)) for c in cases),
+    )
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 5: the algorithm in hover, both readings
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class HoverReadingsData:
+    """The whole algorithm (:func:`rotorlyap.analysis.stability.blade_stability`) in hover for
+    each case, in both readings.
+
+    Attributes
+    ----------
+    case_names : tuple of str
+    strict : tuple of TechnicalStabilityResult
+        Whole spheres, per case.
+    practical : tuple of TechnicalStabilityResult
+        Along the test disturbances, per case.
+    """
+
+    case_names: tuple
+    strict: tuple
+    practical: tuple
+
+    def summary(self) -> str:
+        """Per case: each reading's verdict; the strict maximiser of ``W'`` in scaled
+        coordinates; the practical bound, start region and largest ``W'`` on the shells (J/rad)."""
+        lines = []
+        for name, s, q in zip(self.case_names, self.strict, self.practical):
+            lines += [
+                f"{name} C.G.",
+                f"  {READING_LABELS[s.reading]}: {s.message}",
+                f"     argmax of W' on the sphere, x_i/a_i: {np.round(s.argmax_dW[0] / s.scales, 2) + 0.0}",
+                f"  {READING_LABELS[q.reading]}: {q.message}; A = {q.A:.2f}, "
+                f"lambda0 = {q.lambda0.min():.4f}, max W' on the shells = {q.max_dW.max():.1f} J/rad",
+            ]
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """``ch5_step3_<case>`` (strict step-3 maximum of ``W'``, J/rad, 0.1),
+        ``ch5_prac_stable_<case>`` (practical stable azimuths) and ``ch5_prac_lambda0`` (the
+        forward C.G.'s practical start region, 0.001)."""
+        out = {}
+        for name, s, q in zip(self.case_names, self.strict, self.practical):
+            out[f"ch5_step3_{name}"] = round(float(s.step3_max_dW), 1)
+            out[f"ch5_prac_stable_{name}"] = int(q.stable.sum())
+        out["ch5_prac_lambda0"] = round(float(self.practical[self.case_names.index("forward")].lambda0.min()), 3)
+        return out
+
+
+def hover_readings_data(cases=CASES, *, n_psi: int = 24,
+                        test_disturbances=PAPER_TEST_DISTURBANCES) -> HoverReadingsData:
+    """Run the algorithm in hover for each case: strict (the engine's default search) and
+    practical (along ``test_disturbances``), on ``n_psi`` azimuths (nothing depends on the
+    azimuth in hover)."""
+    strict, practical = [], []
+    for name in cases:
+        p = case_params(name)
+        strict.append(blade_stability(p, 0.0, n_psi=n_psi))
+        practical.append(blade_stability(p, 0.0, n_psi=n_psi, test_disturbances=test_disturbances))
+    return HoverReadingsData(case_names=tuple(cases), strict=tuple(strict), practical=tuple(practical))
 
 
 # --------------------------------------------------------------------------------------
@@ -302,6 +703,77 @@ class HoverRateData:
     strict_label: str
     practical_label: str
     n_evaluations: int
+
+    def case_index(self, case: str) -> int:
+        """Index in :attr:`cg` of a named case's C.G.
+
+        Raises
+        ------
+        ValueError
+            If the sweep does not contain it.
+        """
+        hit = np.flatnonzero(np.isclose(self.cg, CG_POSITIONS[case]))
+        if hit.size == 0:
+            raise ValueError(f"the C.G. sweep {self.cg} does not contain the {case} C.G. {CG_POSITIONS[case]}")
+        return int(hit[0])
+
+    @property
+    def slice_positive_fraction(self) -> float:
+        """Fraction of the points of the (pitch, flap-rate) slice where ``W' > 0``."""
+        return float(np.mean(self.slice_dW > 0))
+
+    def summary(self) -> str:
+        """The sweep in both readings (J/rad) with the linear verdict (per rev); at the forward
+        C.G. the strict maximiser (scaled coordinates) and the work rates there (J/rad); the
+        range of ``W'`` on the slice."""
+        i = self.case_index("forward")
+        c = f"{self.cg[i]:.3f} c"
+        return "\n".join([
+            _line("C.G. (c):                    ", self.cg),
+            _line("strict max W' (J/rad):       ", np.round(self.strict_max, 2)),
+            _line("strict fraction W' > 0:      ", np.round(self.strict_positive_fraction, 3)),
+            _line("practical max W' (J/rad):    ", np.round(self.practical_max, 2) + 0.0),
+            _line("practical shell max (J/rad): ", np.round(self.practical_shell_max, 2) + 0.0),
+            _line("eigen max real part:         ", np.round(self.eig_max_real, 3)),
+            _line("  its frequency (/rev):      ", np.round(self.eig_freq, 3) + 0.0),
+            _line(f"argmax x_i/a_i at {c}:    ", np.round(self.strict_argmax[i], 2) + 0.0),
+            _line(f"aero work rates at argmax, flap/lag/pitch (J/rad), {c}:", np.round(self.terms_aero[i], 2) + 0.0),
+            _line(f"damper work rates at argmax (J/rad), {c}:              ",
+                  np.round(self.terms_damping[i], 3) + 0.0),
+            "W' on the (theta, beta') slice: %.0f to %.0f J/rad; positive on %.3f of the disc" % (
+                self.slice_dW.min(), self.slice_dW.max(), self.slice_positive_fraction),
+        ])
+
+    def facts(self) -> dict:
+        """Chapter 5's Fig. 5 numbers: ``ch5_smax_<case>`` (strict maximum, J/rad, 0.1),
+        ``ch5_smax_change`` (its change over the sweep, %), ``ch5_frac_pct`` and
+        ``ch5_frac_spread`` (sphere fraction with ``W' > 0``, mean and spread, %),
+        ``ch5_pmax`` (practical maximum, J/rad), the forward C.G.'s maximiser ``ch5_arg_*``
+        and work rates ``ch5_aero_flap/lag``, ``ch5_damp_lag`` (J/rad), ``ch5_slice_frac``
+        (%), and the linear verdict along the sweep: ``ch5_cg_most_stable`` (fraction of
+        chord), ``ch5_eig_min/lo/hi`` (largest real part there and at the ends, per rev)."""
+        out = {}
+        for name in CASES:
+            out[f"ch5_smax_{name}"] = round(float(self.strict_max[self.case_index(name)]), 1)
+        out["ch5_smax_change"] = round(float(100 * (self.strict_max[-1] / self.strict_max[0] - 1)), 2)
+        out["ch5_frac_pct"] = round(float(100 * self.strict_positive_fraction.mean()), 1)
+        out["ch5_frac_spread"] = round(float(100 * np.ptp(self.strict_positive_fraction)), 2)
+        out["ch5_pmax"] = round(float(np.abs(self.practical_max).max()), 2)
+        i = self.case_index("forward")
+        am = self.strict_argmax[i]
+        out["ch5_arg_theta"] = round(float(am[2]), 2)
+        out["ch5_arg_beta"] = round(float(am[0]), 2)
+        out["ch5_arg_betadot"] = round(float(am[3]), 2)
+        out["ch5_aero_flap"] = round(float(self.terms_aero[i, 0]), 1)
+        out["ch5_aero_lag"] = round(float(self.terms_aero[i, 1]), 2)
+        out["ch5_damp_lag"] = round(float(self.terms_damping[i, 1]), 3)
+        out["ch5_slice_frac"] = round(float(100 * np.mean(self.slice_dW > 0)), 1)
+        k = int(np.argmin(self.eig_max_real))
+        out["ch5_cg_most_stable"] = float(self.cg[k])
+        out["ch5_eig_min"] = round(float(self.eig_max_real[k]), 3)
+        out["ch5_eig_lo"] = round(float(self.eig_max_real[0]), 3)
+        out["ch5_eig_hi"] = round(float(self.eig_max_real[-1]), 3)
+        return out
 
 
 def hover_rate_data(
@@ -442,6 +914,215 @@ def plot_hover_rate(data: HoverRateData, axes) -> None:
     ax_d.legend(fontsize=6, ncol=2, title="C.G.", title_fontsize=6.5)
 
 
+def figure_hover_rate(data: HoverRateData, figsize=(11.5, 8.6)):
+    """The book's Fig. 5 (:func:`plot_hover_rate` on a 2 x 2 grid), laid out; returns the Figure."""
+    fig, axes = subplots(2, 2, figsize=figsize)
+    plot_hover_rate(data, axes.ravel())
+    fig.tight_layout()
+    return fig
+
+
+@dataclass(frozen=True)
+class SearchCheckData:
+    """The strict maximum of ``W'`` on the sphere in hover: the engine's default search (step 3)
+    against the refined search of Fig. 5, per case.
+
+    Attributes
+    ----------
+    case_names : tuple of str
+    engine : numpy.ndarray
+        Step 3's largest ``W'`` on ``||x|| = A``, (3,), J/rad.
+    refined : numpy.ndarray
+        :attr:`HoverRateData.strict_max` at the case, (3,), J/rad.
+    """
+
+    case_names: tuple
+    engine: np.ndarray
+    refined: np.ndarray
+
+    @property
+    def gap(self) -> float:
+        """Largest ``|refined - engine|`` over the cases, J/rad."""
+        return float(max(abs(r - e) for r, e in zip(self.refined, self.engine)))
+
+    def summary(self) -> str:
+        """Both maxima per case, J/rad (0.01)."""
+        return "\n".join(f"{name:9s} engine step 3 (default search): {e:6.2f} J/rad;  "
+                         f"refined search of Fig. 5: {r:6.2f} J/rad"
+                         for name, e, r in zip(self.case_names, self.engine, self.refined))
+
+    def facts(self) -> dict:
+        """``ch5_search_gap`` (:attr:`gap`, J/rad, 0.01)."""
+        return {"ch5_search_gap": round(self.gap, 2)}
+
+
+def search_check(readings: HoverReadingsData, rate: HoverRateData) -> SearchCheckData:
+    """Compare the engine's step-3 maximum of each case with the refined maximum of Fig. 5."""
+    return SearchCheckData(
+        case_names=readings.case_names,
+        engine=np.array([s.step3_max_dW for s in readings.strict], dtype=float),
+        refined=np.array([rate.strict_max[rate.case_index(n)] for n in readings.case_names]),
+    )
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 5: linear divergence along the C.G. sweep
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class HoverDivergenceData:
+    """Linear theory along the C.G. sweep of Fig. 5: where the least-damped root crosses zero,
+    the practical reading at the C.G.s of the sweep behind it, and the pitch mode.
+
+    Attributes
+    ----------
+    cg : numpy.ndarray
+        The sweep, fraction of chord, (k,).
+    least_damped_re : numpy.ndarray
+        Largest real part of the linearised hover eigenvalues, per rev, (k,).
+    pitch_re : numpy.ndarray
+        Real part of the pitch mode (:func:`rotorlyap.model.modes.pitch_mode`), per rev, (k,).
+    cg_cross : float
+        C.G. where the least-damped growth rate crosses zero (Brent's method between the
+        sweep points around the first unstable one, to ``xtol``), fraction of chord.
+    cross_mode : rotorlyap.model.modes.Mode
+        The least-damped mode there.
+    practical : tuple of TechnicalStabilityResult
+        The practical reading in hover at each C.G. of the sweep from the first unstable one.
+    backward_cg, pitch_axis : float
+        The backward case's C.G. and the pitch axis, fraction of chord.
+    """
+
+    cg: np.ndarray
+    least_damped_re: np.ndarray
+    pitch_re: np.ndarray
+    cg_cross: float
+    cross_mode: Mode
+    practical: tuple
+    backward_cg: float
+    pitch_axis: float
+
+    @property
+    def unstable_cg(self) -> np.ndarray:
+        """The C.G.s of the sweep that linear theory finds unstable (a tail of the sweep), (d,)."""
+        return self.cg[len(self.cg) - len(self.practical):]
+
+    def summary(self) -> str:
+        """The crossing (0.0001 c) and what the root is there; the practical verdict at each
+        linearly unstable C.G.; the pitch mode's real part along the sweep (per rev)."""
+        m = self.cross_mode
+        lines = ["the least-damped root crosses zero at a C.G. of %.4f c (there: %s, frequency %.3f/rev)" % (
+            self.cg_cross, "an oscillatory pair" if m.oscillatory else "a real root", m.eigenvalue.imag)]
+        d = len(self.practical)
+        for c, r, q in zip(self.unstable_cg, self.least_damped_re[-d:], self.practical):
+            lines.append(f"{c:.3f} c: linear theory: unstable (largest real part {r:+.3f}); "
+                         f"{READING_LABELS[q.reading]}: {q.message}")
+        lines.append(_line("pitch mode (the fast pair) real part along the sweep:", np.round(self.pitch_re, 3)))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """``ch5_cg_div`` (crossing, 0.001 c), ``ch5_div_behind_backward`` and
+        ``ch5_div_behind_pa`` (its distance behind the backward C.G. and the pitch axis,
+        fraction of chord), ``ch5_n_div`` (unstable C.G.s of the sweep),
+        ``ch5_n_div_prac_min`` (fewest practical stable azimuths among them) and
+        ``ch5_pitch_re_lo/hi`` (pitch mode real part at the ends of the sweep, per rev, 0.01)."""
+        n_stable = [int(q.stable.sum()) for q in self.practical]
+        return {
+            "ch5_cg_div": round(float(self.cg_cross), 3),
+            "ch5_div_behind_backward": round(float(self.cg_cross - self.backward_cg), 4),
+            "ch5_div_behind_pa": round(float(self.cg_cross - self.pitch_axis), 3),
+            "ch5_n_div": len(n_stable),
+            "ch5_n_div_prac_min": min(n_stable),
+            "ch5_pitch_re_lo": round(float(self.pitch_re[0]), 2),
+            "ch5_pitch_re_hi": round(float(self.pitch_re[-1]), 2),
+        }
+
+
+def hover_divergence_data(rate: HoverRateData, *, n_psi: int = 24, test_disturbances=PAPER_TEST_DISTURBANCES,
+                          xtol: float = 1e-6) -> HoverDivergenceData:
+    """Find where linear theory turns unstable along the sweep of ``rate`` (its
+    :attr:`HoverRateData.eig_max_real`) and run the practical reading there.
+
+    Raises
+    ------
+    ValueError
+        If the sweep is not stable at its first C.G. and unstable at a later one.
+    """
+    def growth(cg) -> float:
+        return least_damped(hover_modes(case_params(cg))).growth_rate
+
+    unstable = np.flatnonzero(rate.eig_max_real > 0)
+    if unstable.size == 0 or unstable[0] == 0:
+        raise ValueError("hover_divergence_data: the sweep must start stable and turn unstable")
+    j = int(unstable[0])
+    cross = brentq(growth, rate.cg[j - 1], rate.cg[j], xtol=xtol)
+    practical = tuple(blade_stability(case_params(float(c)), 0.0, n_psi=n_psi, test_disturbances=test_disturbances)
+                      for c in rate.cg[j:])
+    pitch_re = np.array([pitch_mode(hover_modes(case_params(c))).growth_rate for c in rate.cg])
+    return HoverDivergenceData(
+        cg=rate.cg, least_damped_re=rate.eig_max_real, pitch_re=pitch_re, cg_cross=float(cross),
+        cross_mode=least_damped(hover_modes(case_params(cross))), practical=practical,
+        backward_cg=float(CG_POSITIONS["backward"]), pitch_axis=float(case_params("forward").pitch_axis),
+    )
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 6: the loads the reused hover equilibrium leaves unbalanced
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class UnbalancedLoadsData:
+    """``Delta Q(psi, 0)``: the forward-flight aerodynamic hinge moments at the hover
+    equilibrium minus the hover ones that hold it in balance.
+
+    Attributes
+    ----------
+    cg : str or float
+        The case.
+    mu : float
+        Advance ratio.
+    psi : numpy.ndarray
+        Azimuths, rad, (n,).
+    delta_q : numpy.ndarray
+        Flap, lag and pitch moments, N m, (n, 3).
+    """
+
+    cg: object
+    mu: float
+    psi: np.ndarray
+    delta_q: np.ndarray
+
+    def summary(self) -> str:
+        """Smallest and largest moment over the azimuth per hinge (N m, 0.1) and where (deg)."""
+        lines = [f"Delta Q(psi, x = 0) at mu = {self.mu:g}, {self.cg} C.G., amplitude over the azimuth (N m):"]
+        for h, name in enumerate(_HINGES):
+            q = self.delta_q[:, h]
+            lines.append(f"  {name:5s}: from {q.min():8.1f} (psi = {np.degrees(self.psi[np.argmin(q)]):3.0f} deg) "
+                         f"to {q.max():8.1f} (psi = {np.degrees(self.psi[np.argmax(q)]):3.0f} deg)")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """``ch6_dq_<hinge>_min/max``: the range over the azimuth, N m, to 1 N m."""
+        out = {}
+        for h, name in enumerate(_HINGES):
+            out[f"ch6_dq_{name}_min"] = round(float(self.delta_q[:, h].min()), 0)
+            out[f"ch6_dq_{name}_max"] = round(float(self.delta_q[:, h].max()), 0)
+        return out
+
+
+def unbalanced_loads_data(cg="forward", mu: float = 0.15, *, psi_step_deg: float = 5.0) -> UnbalancedLoadsData:
+    """Compute :class:`UnbalancedLoadsData` every ``psi_step_deg`` degrees of azimuth."""
+    p = case_params(cg)
+    hover = Blade(p, 0.0)
+    xi = hover.equilibrium()
+    psi = np.radians(np.arange(0, 360, psi_step_deg))
+    dq = (Blade(p, mu).aerodynamic_forces(psi, np.broadcast_to(xi, (psi.size, 6)))
+          - hover.aerodynamic_forces(0.0, xi))
+    return UnbalancedLoadsData(cg=cg, mu=float(mu), psi=psi, delta_q=dq)
+
+
 # --------------------------------------------------------------------------------------
 # Fig. 6: W(psi, x) at mu = 0.15 for several bounds A
 # --------------------------------------------------------------------------------------
@@ -467,6 +1148,9 @@ class WSpheresData:
         Over the test disturbances only, (m, n), J.
     strict_label, practical_label : str
     n_evaluations : int
+    axis_W : numpy.ndarray
+        ``W`` at ``psi = 0`` along each positive scaled axis on the unit sphere
+        (``x = a_i e_i``), (6,), J: which axis has the least energy.
     """
 
     cg: object
@@ -480,6 +1164,49 @@ class WSpheresData:
     strict_label: str
     practical_label: str
     n_evaluations: int
+    axis_W: np.ndarray
+
+    @property
+    def azimuth_variation(self) -> float:
+        """Largest relative variation over the azimuth of the infimum or supremum on a sphere, -."""
+        return max(float(np.ptp(a, axis=1).max() / a.mean()) for a in (self.strict_inf, self.strict_sup))
+
+    def summary(self) -> str:
+        """Azimuth means of the four extrema (J) and of the strict ones over ``A^2``, the
+        variation over the azimuth and :attr:`axis_W` (J)."""
+        A2 = self.A_values ** 2
+        return "\n".join([
+            _line("A:                          ", self.A_values),
+            _line("inf W over sphere (J):      ", np.round(self.strict_inf.mean(axis=1), 3)),
+            _line("sup W over sphere (J):      ", np.round(self.strict_sup.mean(axis=1), 1)),
+            _line("min W over 12 axes (J):     ", np.round(self.practical_min.mean(axis=1), 3)),
+            _line("max W over 12 axes (J):     ", np.round(self.practical_max.mean(axis=1), 1)),
+            _line("inf W / A^2:                ", np.round(self.strict_inf.mean(axis=1) / A2, 4)),
+            _line("sup W / A^2:                ", np.round(self.strict_sup.mean(axis=1) / A2, 1)),
+            "largest relative variation over the azimuth: %.1e" % self.azimuth_variation,
+            "W along each axis at ||x|| = 1 (J): " + ", ".join(
+                f"{n.strip('$')} {v:.2f}" for n, v in zip(STATE_LABELS, self.axis_W)),
+        ])
+
+    def facts(self) -> dict:
+        """Chapter 6's Fig. 6 numbers: ``ch6_w_theta`` and ``ch6_w_fl_min`` (``W`` along the
+        pitch axis and the least along a flap or lag axis, J), ``ch6_w_var`` (variation over
+        the azimuth, one digit), ``ch6_winf_<i>`` and ``ch6_wsup_<i>`` (azimuth means per
+        ``A``, J) and ``ch6_rinf_change``, ``ch6_rsup_change`` (change of ``W/A^2`` from the
+        smallest to the largest ``A``, %)."""
+        out = {
+            "ch6_w_theta": round(float(self.axis_W[2]), 1),
+            "ch6_w_fl_min": round(float(self.axis_W[[0, 1, 3, 4]].min()), 0),
+            "ch6_w_var": float("%.1g" % self.azimuth_variation),
+        }
+        for i in range(len(self.A_values)):
+            out[f"ch6_winf_{i}"] = round(float(self.strict_inf[i].mean()), 3)
+            out[f"ch6_wsup_{i}"] = round(float(self.strict_sup[i].mean()), 0)
+        r_inf = self.strict_inf.mean(axis=1) / self.A_values ** 2
+        r_sup = self.strict_sup.mean(axis=1) / self.A_values ** 2
+        out["ch6_rinf_change"] = round(float(100 * (r_inf[-1] / r_inf[0] - 1)), 1)
+        out["ch6_rsup_change"] = round(float(100 * (r_sup[-1] / r_sup[0] - 1)), 1)
+        return out
 
 
 def w_spheres_data(cg="forward", mu: float = 0.15, A_values=(0.5, 1.0, 2.0, 4.0, 8.0), *, n_psi: int = 72,
@@ -488,7 +1215,9 @@ def w_spheres_data(cg="forward", mu: float = 0.15, A_values=(0.5, 1.0, 2.0, 4.0,
     """Compute :class:`WSpheresData` for the energy function about the hover equilibrium."""
     a = np.array(DEFAULT_SCALES if scales is None else scales, dtype=float)
     p = case_params(cg)
-    xi = Blade(p, 0.0).equilibrium()
+    hover = Blade(p, 0.0)
+    xi = hover.equilibrium()
+    axis_W = energy_function(hover, xi).W(np.zeros(6), np.eye(6) * a)
     fun = energy_function(Blade(p, mu), xi)
     w = _Count(fun.W)
     psi = 2 * np.pi * np.arange(n_psi) / n_psi
@@ -505,7 +1234,8 @@ def w_spheres_data(cg="forward", mu: float = 0.15, A_values=(0.5, 1.0, 2.0, 4.0,
     return WSpheresData(cg=cg, mu=float(mu), psi=psi, A_values=np.asarray(A_values, dtype=float),
                         strict_inf=np.array(out["inf"]), strict_sup=np.array(out["sup"]),
                         practical_min=np.array(out["pmin"]), practical_max=np.array(out["pmax"]),
-                        strict_label=READING_LABELS["strict"], practical_label=READING_LABELS["practical"], n_evaluations=w.n)
+                        strict_label=READING_LABELS["strict"], practical_label=READING_LABELS["practical"],
+                        n_evaluations=w.n, axis_W=axis_W)
 
 
 def plot_w_spheres(data: WSpheresData, axes) -> None:
@@ -542,6 +1272,14 @@ def plot_w_spheres(data: WSpheresData, axes) -> None:
     ax2.legend(fontsize=7)
 
 
+def figure_w_spheres(data: WSpheresData, figsize=(11.5, 4.3)):
+    """The book's Fig. 6 (:func:`plot_w_spheres`, the azimuth panel wider), laid out; returns the Figure."""
+    fig, axes = subplots(1, 2, figsize=figsize, gridspec_kw=dict(width_ratios=(1.6, 1)))
+    plot_w_spheres(data, axes)
+    fig.tight_layout()
+    return fig
+
+
 # --------------------------------------------------------------------------------------
 # Fig. 7: W' against azimuth in forward flight
 # --------------------------------------------------------------------------------------
@@ -568,6 +1306,8 @@ class RateAzimuthData:
     test_disturbances : numpy.ndarray
     strict_label, practical_label : str
     n_evaluations : int
+    axis_max : numpy.ndarray
+        Largest ``W'`` over the azimuth along each test disturbance, (m, n_test), J/rad.
     """
 
     cg: object
@@ -581,6 +1321,47 @@ class RateAzimuthData:
     strict_label: str
     practical_label: str
     n_evaluations: int
+    axis_max: np.ndarray
+
+    def summary(self) -> str:
+        """Per advance ratio: the extremes over the azimuth of both maxima (J/rad), the
+        azimuths with a positive practical maximum, where and along which axis the practical
+        maximum lies; at the second advance ratio, :attr:`axis_max` (J/rad, 0.1)."""
+        names = disturbance_names(self.test_disturbances)
+        lines = [
+            _line("mu                              ", self.mu_values),
+            _line("strict: max over psi of max W'  ", np.round(self.strict_max.max(axis=1), 0)),
+            _line("strict: min over psi of max W'  ", np.round(self.strict_max.min(axis=1), 1)),
+            _line("practical: max over psi         ", np.round(self.practical_max.max(axis=1), 0)),
+            _line("practical: min over psi         ", np.round(self.practical_max.min(axis=1), 3)),
+            _line("practical: azimuths with W' > 0 ", (self.practical_max > 0).sum(axis=1)),
+        ]
+        for i, mu in enumerate(self.mu_values):
+            j = int(np.argmax(self.practical_max[i]))
+            lines.append(f"  mu = {mu:.2f}: practical maximum at psi = {np.degrees(self.psi[j]):3.0f} deg "
+                         f"along {names[self.practical_argmax[i, j]]}")
+        lines.append(f"mu = {self.mu_values[1]:.2f}: largest W' over the azimuth along each axis (J/rad):")
+        lines.append("  " + ", ".join(f"{n} {v:.1f}" for n, v in zip(names, self.axis_max[1])))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Chapter 6's Fig. 7 numbers, at the second advance ratio (``_005``) and the last
+        (``_025``): the largest ``W'`` along the flap and pitch rates (J/rad), the azimuths
+        with practical ``W' > 0`` and without, the smallest practical maximum, the strict
+        maximum in hover and at the last ``mu`` (J/rad), the practical maximum there and
+        its azimuth (deg)."""
+        ax = dict(zip(disturbance_names(self.test_disturbances), self.axis_max[1]))
+        return {
+            "ch6_f7_ax_betadot": round(float(max(ax["+\\beta'"], ax["-\\beta'"])), 0),
+            "ch6_f7_ax_thetadot": round(float(max(ax["+\\theta'"], ax["-\\theta'"])), 1),
+            "ch6_f7_nzero_005": int((self.practical_max[1] <= 0).sum()),
+            "ch6_f7_smax_025": round(float(self.strict_max[-1].max()), 0),
+            "ch6_f7_smax_0": round(float(self.strict_max[0].max()), 1),
+            "ch6_f7_pmax_025": round(float(self.practical_max[-1].max()), 0),
+            "ch6_f7_psi_pmax_025": int(round(np.degrees(self.psi[np.argmax(self.practical_max[-1])]))),
+            "ch6_f7_pmin_005": round(float(self.practical_max[1].min()), 3),
+            "ch6_f7_npos_005": int((self.practical_max[1] > 0).sum()),
+        }
 
 
 def rate_azimuth_data(cg="forward", mu_values=(0.0, 0.05, 0.1, 0.15, 0.2, 0.25), *, A: float = DEFAULT_A,
@@ -594,18 +1375,20 @@ def rate_azimuth_data(cg="forward", mu_values=(0.0, 0.05, 0.1, 0.15, 0.2, 0.25),
     dirs = unit_sphere_points(6, n_sphere, seed)
     tests = np.asarray(test_disturbances, dtype=float)
     tests = tests / np.linalg.norm(tests, axis=1, keepdims=True)
-    smax, pmax, parg, n_eval = [], [], [], 0
+    smax, pmax, parg, amax, n_eval = [], [], [], [], 0
     for mu in mu_values:
         dw = _Count(energy_function(Blade(p, mu), xi).dW)
         smax.append(sphere_extremum(dw, psi, A, a, dirs).value)
         vals = dw(np.repeat(psi, len(tests)), np.tile(A * tests * a, (n_psi, 1))).reshape(n_psi, -1)
         pmax.append(vals.max(axis=1))
         parg.append(vals.argmax(axis=1))
+        amax.append(vals.max(axis=0))
         n_eval += dw.n
     return RateAzimuthData(cg=cg, A=float(A), mu_values=np.asarray(mu_values, dtype=float), psi=psi,
                            strict_max=np.array(smax), practical_max=np.array(pmax),
                            practical_argmax=np.array(parg), test_disturbances=tests,
-                           strict_label=READING_LABELS["strict"], practical_label=READING_LABELS["practical"], n_evaluations=n_eval)
+                           strict_label=READING_LABELS["strict"], practical_label=READING_LABELS["practical"],
+                           n_evaluations=n_eval, axis_max=np.array(amax))
 
 
 def plot_rate_azimuth(data: RateAzimuthData, axes) -> None:
@@ -629,6 +1412,15 @@ def plot_rate_azimuth(data: RateAzimuthData, axes) -> None:
         ax.set_ylabel(rf"max $W'$ over {where}, $\|x\| = A$ (J/rad)")
         ax.set_title((data.strict_label if reading == 'strict' else data.practical_label), fontsize=9)
     axes[0].legend(fontsize=7, ncol=2, loc="center right")
+
+
+def figure_rate_azimuth(data: RateAzimuthData, figsize=(12, 4.3)):
+    """The book's Fig. 7 (:func:`plot_rate_azimuth`, one panel per reading, shared ``W'`` axis),
+    laid out; returns the Figure."""
+    fig, axes = subplots(1, 2, figsize=figsize, sharey=True)
+    plot_rate_azimuth(data, axes)
+    fig.tight_layout()
+    return fig
 
 
 # --------------------------------------------------------------------------------------
@@ -695,6 +1487,47 @@ class RegionsData:
     def unstable_fraction(self) -> np.ndarray:
         """Fraction of azimuths not stable, (k, m)."""
         return 1.0 - self.stable.mean(axis=-1)
+
+    def positive_side_fractions(self, case_index: int = 0) -> tuple[np.ndarray, np.ndarray]:
+        """Fractions of the advancing (0 to 180 deg) and retreating (180 to 360 deg) azimuths
+        with ``W' > 0`` on the requested sphere (category 3), per advance ratio, (m,) each."""
+        pos = self.category[case_index] == 3
+        adv = (self.psi > 0) & (self.psi < np.pi)
+        ret = self.psi > np.pi
+        return (np.array([pos[i, adv].mean() for i in range(self.mu_values.size)]),
+                np.array([pos[i, ret].mean() for i in range(self.mu_values.size)]))
+
+    def summary(self) -> str:
+        """The reading, the advance ratios, per case the stable azimuths and the bound after
+        step 3 per ``mu``, and the cells with ``W' > 0`` on the requested sphere."""
+        lines = [self.label, _line("  mu:", self.mu_values)]
+        for k, case in enumerate(self.cases):
+            lines.append(_line(f"  {case:9s} stable azimuths:", self.stable[k].sum(axis=1),
+                               " A after step 3:", np.round(self.A_used[k], 3)))
+        lines.append(_line("  cells with W' > 0 on the sphere (step 3 failed):", int((self.category == 3).sum()),
+                           "of", self.category.size))
+        return "\n".join(lines)
+
+    def side_summary(self) -> str:
+        """Whether the per-azimuth picture (``W' > 0`` on the sphere) is the same for every
+        case, and its fractions on the advancing and retreating sides per ``mu`` (0.01)."""
+        pos = self.category == 3
+        adv, ret = self.positive_side_fractions(0)
+        lines = [_line(f"{self.reading}, W' > 0 on the sphere: the same map for every C.G.:",
+                       all(np.array_equal(pos[0], pos[k]) for k in range(len(self.cases)))),
+                 f"{self.reading}, fraction of azimuths with W' > 0 on the sphere, advancing / retreating side:"]
+        lines += [f"  mu = {mu:.4f}: {a:.2f} / {r:.2f}" for mu, a, r in zip(self.mu_values, adv, ret)]
+        return "\n".join(lines)
+
+    def export(self) -> list:
+        """One row per (case, mu, psi) cell for :func:`rotorlyap.figures.export.figure_csv`:
+        case index, ``mu``, ``psi`` (deg), category, stable and ``max_dW`` (J/rad)."""
+        k, m, n = self.category.shape
+        return [("case", np.repeat(np.arange(k), m * n)),
+                ("mu", np.tile(np.repeat(self.mu_values, n), k)),
+                ("psi_deg", np.tile(np.degrees(self.psi), k * m)),
+                ("category", self.category.ravel()), ("stable", self.stable.ravel()),
+                ("max_dW", self.max_dW.ravel())]
 
 
 def _category(res) -> np.ndarray:
@@ -832,11 +1665,137 @@ def plot_regions_plane(data: RegionsData, ax, case_index: int = 0, *, title: str
     ax.set_ylabel(r"advance ratio $\mu$")
     ax.set_title(title or f"{data.cases[case_index]} C.G.", fontsize=9, pad=12)
     if legend:
-        from matplotlib.patches import Patch
+        ax.legend(handles=category_legend_handles(), fontsize=6.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
 
-        handles = [Patch(color=c, label=n) for c, n in zip(CATEGORY_COLORS, CATEGORY_NAMES)]
-        handles.append(Patch(facecolor="none", edgecolor="k", hatch="///", label="reverse flow reaches the blade root"))
-        ax.legend(handles=handles, fontsize=6.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+
+@dataclass(frozen=True)
+class RegionMaps:
+    """The Fig. 8 maps of chapter 6 in both readings.
+
+    Attributes
+    ----------
+    practical, strict : RegionsData
+    """
+
+    practical: RegionsData
+    strict: RegionsData
+
+    def summary(self) -> str:
+        """Both maps' :meth:`RegionsData.summary`, then the practical per-azimuth picture."""
+        return "\n".join([self.practical.summary(), self.strict.summary(), self.practical.side_summary()])
+
+    def facts(self) -> dict:
+        """Chapter 6's Fig. 8 numbers: practical ``ch6_p_hover_stable`` of ``ch6_p_n_hover``
+        (case, azimuth) pairs in hover, ``ch6_p_mu1`` (first ``mu > 0``), ``ch6_p_fw_stable``
+        (stable cells in forward flight), ``ch6_p_lambda0`` (forward C.G. in hover),
+        ``ch6_p_adv/ret_<1, mid, last>`` (side fractions of ``W' > 0`` at the first ``mu > 0``,
+        at ``mu`` = ``ch6_p_mu_mid`` = 0.1 and at the last); strict ``ch6_s_stable`` of
+        ``ch6_s_cells``; ``ch6_root`` (blade root station ``r/R``)."""
+        p, s = self.practical, self.strict
+        out = {
+            "ch6_p_hover_stable": int(p.stable[:, 0].sum()),
+            "ch6_p_n_hover": int(p.stable[:, 0].size),
+            "ch6_p_mu1": float(p.mu_values[1]),
+            "ch6_p_fw_stable": int(p.stable[:, 1:].sum()),
+            "ch6_s_stable": int(s.stable.sum()),
+            "ch6_s_cells": int(s.stable.size),
+            "ch6_root": round(p.root_r_over_R, 3),
+            "ch6_p_lambda0": round(float(p.lambda0[0, 0].min()), 3),
+        }
+        adv, ret = p.positive_side_fractions(0)
+        i_mid = int(np.flatnonzero(np.isclose(p.mu_values, 0.1))[0])
+        for tag, i in (("1", 1), ("mid", i_mid), ("last", -1)):
+            out[f"ch6_p_adv_{tag}"] = round(float(adv[i]), 2)
+            out[f"ch6_p_ret_{tag}"] = round(float(ret[i]), 2)
+        out["ch6_p_mu_mid"] = float(p.mu_values[i_mid])
+        return out
+
+
+def region_maps(cases=CASES, mu_practical=MU_GRID, mu_strict=MU_GRID_STRICT, *, n_psi: int = 72,
+                n_sphere_strict: int = 64) -> RegionMaps:
+    """:func:`regions_data` in the practical reading on ``mu_practical`` and in the strict
+    reading on ``mu_strict`` (``n_sphere_strict`` quasi-random directions per sphere)."""
+    return RegionMaps(
+        practical=regions_data(cases, mu_practical, reading="practical", n_psi=n_psi),
+        strict=regions_data(cases, mu_strict, reading="strict", n_psi=n_psi, n_sphere=n_sphere_strict),
+    )
+
+
+def figure_regions_polar(*rows: RegionsData, figsize=(12, 8.6)):
+    """The book's Fig. 8 on the rotor disc: one row per :class:`RegionsData`, one polar panel
+    per case (:func:`plot_regions_polar`), the legend below; returns the Figure."""
+    ncols = max(len(r.cases) for r in rows)
+    fig = figure(figsize=figsize)
+    for row, reg in enumerate(rows):
+        for k in range(len(reg.cases)):
+            ax = fig.add_subplot(len(rows), ncols, ncols * row + k + 1, projection="polar")
+            plot_regions_polar(reg, ax, k, title=f"{reg.cases[k]} C.G., {reg.label}")
+    fig.legend(handles=category_legend_handles(), loc="lower center", ncol=3, fontsize=8)
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
+    return fig
+
+
+def figure_regions_plane(*rows: RegionsData, figsize=(13, 6.8)):
+    """The maps of :func:`figure_regions_polar` in the (psi, mu) plane
+    (:func:`plot_regions_plane`); returns the Figure."""
+    ncols = max(len(r.cases) for r in rows)
+    fig, axes = subplots(len(rows), ncols, figsize=figsize, sharex=True, squeeze=False)
+    for row, reg in enumerate(rows):
+        for k in range(len(reg.cases)):
+            plot_regions_plane(reg, axes[row, k], k, title=f"{reg.cases[k]} C.G., {reg.label}", legend=False)
+    fig.legend(handles=category_legend_handles(), loc="lower center", ncol=3, fontsize=8)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    return fig
+
+
+@dataclass(frozen=True)
+class HoverFlutterCheck:
+    """Linear theory against the practical reading in hover: the largest growth rate of each
+    case, and a blade that flutters (a case without the aerodynamic pitch damping,
+    ``cm_pitch_rate = 0``) in the practical reading.
+
+    Attributes
+    ----------
+    case_names : tuple of str
+    growth_rate : numpy.ndarray
+        Largest real part of the linearised hover eigenvalues of each case, per rev, (3,).
+    flutter_case : str
+    flutter_growth_rate : float
+        The same for the fluttering blade, per rev.
+    flutter_stable : int
+        Azimuths the practical reading calls stable for it, of ``n_psi``.
+    n_psi : int
+    """
+
+    case_names: tuple
+    growth_rate: np.ndarray
+    flutter_case: str
+    flutter_growth_rate: float
+    flutter_stable: int
+    n_psi: int
+
+    def summary(self) -> str:
+        """The fluttering blade's growth rate (per rev, 0.001) and practical verdict."""
+        return (f"{self.flutter_case} C.G. without pitch damping, hover: largest real part "
+                f"{self.flutter_growth_rate:+.3f}, practical: stable at {self.flutter_stable} of {self.n_psi} azimuths")
+
+    def facts(self) -> dict:
+        """``ch6_flut_re`` (signed text, per rev) and ``ch6_flut_stable`` (azimuths)."""
+        return {"ch6_flut_re": f"{self.flutter_growth_rate:+.3f}", "ch6_flut_stable": self.flutter_stable}
+
+
+def hover_flutter_check(cases=CASES, flutter_case: str = "backward", *, n_psi: int = 72,
+                        test_disturbances=PAPER_TEST_DISTURBANCES) -> HoverFlutterCheck:
+    """Compute :class:`HoverFlutterCheck` (:func:`rotorlyap.model.modes.hover_modes`, then the
+    practical reading of the fluttering blade on ``n_psi`` azimuths)."""
+    p_flut = case_params(flutter_case, cm_pitch_rate=0.0)
+    stable = blade_stability(p_flut, 0.0, n_psi=n_psi, test_disturbances=test_disturbances).stable
+    return HoverFlutterCheck(
+        case_names=tuple(cases),
+        growth_rate=np.array([least_damped(hover_modes(case_params(c))).growth_rate for c in cases]),
+        flutter_case=flutter_case, flutter_growth_rate=float(least_damped(hover_modes(p_flut)).growth_rate),
+        flutter_stable=int(stable.sum()), n_psi=int(n_psi),
+    )
 
 
 def practical_threshold_mu(cg="forward", *, mu_lo: float = 1e-6, mu_hi: float = 0.05, n_bisect: int = 20,
@@ -860,6 +1819,91 @@ def practical_threshold_mu(cg="forward", *, mu_lo: float = 1e-6, mu_hi: float = 
         mid = float(np.sqrt(lo * hi))
         lo, hi = (mid, hi) if ok(mid) else (lo, mid)
     return hi
+
+
+#: Test-disturbance sets of the threshold study, by name, with the short tag of their glue names.
+THRESHOLD_TEST_SETS = {
+    "12 axes": ("12", PAPER_TEST_DISTURBANCES),
+    "flap and lag axes": ("fl", FLAP_LAG_TEST_DISTURBANCES),
+}
+
+
+@dataclass(frozen=True)
+class ThresholdData:
+    """The practical threshold (:func:`practical_threshold_mu`) for several inflow models and
+    test-disturbance sets, and for one model the hover start region and the flight speed.
+
+    Attributes
+    ----------
+    cg : str or float
+    models : tuple of str
+        Inflow models.
+    test_sets : tuple of str
+        Keys of :data:`THRESHOLD_TEST_SETS`.
+    threshold : numpy.ndarray
+        Advance ratio up to which every azimuth is stable, (len(models), len(test_sets)).
+    speed_model : str
+        The model of :attr:`hover_lambda0` and :attr:`speed`.
+    hover_lambda0 : numpy.ndarray
+        Practical start region in hover, per test set, -.
+    speed : numpy.ndarray
+        Threshold flight speed ``mu Omega R``, per test set, m/s.
+    """
+
+    cg: object
+    models: tuple
+    test_sets: tuple
+    threshold: np.ndarray
+    speed_model: str
+    hover_lambda0: np.ndarray
+    speed: np.ndarray
+
+    def threshold_of(self, model: str, test_set: str) -> float:
+        """The threshold of one inflow model and test set."""
+        return float(self.threshold[self.models.index(model), self.test_sets.index(test_set)])
+
+    def summary(self) -> str:
+        """Every threshold (2 digits), then the start region (0.001) and threshold speed (m/s,
+        2 digits) of :attr:`speed_model`."""
+        lines = [f"inflow {model:8s}, {tname:18s}: every azimuth stable up to mu = "
+                 f"{self.threshold_of(model, tname):.2g}" for model in self.models for tname in self.test_sets]
+        lines += [f"inflow {self.speed_model:8s}, {tname:18s}: hover start region lambda0 = {lam:.3f}; "
+                  f"threshold flight speed {v:.2g} m/s"
+                  for tname, lam, v in zip(self.test_sets, self.hover_lambda0, self.speed)]
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """For :attr:`speed_model` (tag: its first two letters) and each test set (tag of
+        :data:`THRESHOLD_TEST_SETS`): ``ch6_thr_<m>_<t>`` (2 digits), ``ch6_lam_<m>_<t>``
+        (0.001) and ``ch6_v_<m>_<t>`` (m/s, 2 digits)."""
+        m = self.speed_model[:2]
+        out = {}
+        for tname in self.test_sets:
+            thr = self.threshold_of(self.speed_model, tname)
+            out[f"ch6_thr_{m}_{THRESHOLD_TEST_SETS[tname][0]}"] = float("%.2g" % thr)
+        for tname, lam, v in zip(self.test_sets, self.hover_lambda0, self.speed):
+            tag = THRESHOLD_TEST_SETS[tname][0]
+            out[f"ch6_lam_{m}_{tag}"] = round(float(lam), 3)
+            out[f"ch6_v_{m}_{tag}"] = float("%.2g" % v)
+        return out
+
+
+def practical_threshold_data(cg="forward", models=("glauert", "drees"), test_sets=tuple(THRESHOLD_TEST_SETS), *,
+                             speed_model: str = "drees", mu_lo: float = 1e-7, n_psi: int = 72,
+                             n_bisect: int = 20) -> ThresholdData:
+    """Bisect the practical threshold for each inflow model and test set (``mu_lo``, ``n_psi``
+    and ``n_bisect`` go to :func:`practical_threshold_mu`), and for ``speed_model`` the hover
+    start region (4 azimuths: nothing depends on the azimuth in hover) and the speed."""
+    thr = np.array([[practical_threshold_mu(cg, mu_lo=mu_lo, n_psi=n_psi, n_bisect=n_bisect,
+                                            test_disturbances=THRESHOLD_TEST_SETS[t][1],
+                                            params_overrides=dict(inflow_model=model))
+                     for t in test_sets] for model in models])
+    p = case_params(cg, inflow_model=speed_model)
+    lam = np.array([float(blade_stability(p, 0.0, n_psi=4, test_disturbances=THRESHOLD_TEST_SETS[t][1]).lambda0.min())
+                    for t in test_sets])
+    speed = thr[list(models).index(speed_model)] * p.rotor_speed * p.radius
+    return ThresholdData(cg=cg, models=tuple(models), test_sets=tuple(test_sets), threshold=thr,
+                         speed_model=speed_model, hover_lambda0=lam, speed=speed)
 
 
 # --------------------------------------------------------------------------------------
@@ -908,6 +1952,77 @@ class SensitivityData:
             out.append(row)
         return out
 
+    def variant(self, name: str) -> RegionsData:
+        """The map of one variant."""
+        return self.regions[self.names.index(name)]
+
+    def stable_forward_flight(self, name: str) -> tuple[int, float, list[int]]:
+        """Of one variant: the stable cells with ``mu > 0``, the first such ``mu`` and its stable
+        azimuths (deg); ``(0, nan, [])`` if there are none."""
+        r = self.variant(name)
+        rows = np.flatnonzero(r.stable[0, 1:].any(axis=1)) + 1
+        if rows.size == 0:
+            return 0, float("nan"), []
+        i = int(rows[0])
+        return (int(r.stable[0, 1:].sum()), float(r.mu_values[i]),
+                [int(v) for v in np.round(np.degrees(r.psi[r.stable[0, i]]))])
+
+    def summary(self) -> str:
+        """Per variant: test disturbances, hover start region, bound after step 3 and stable
+        azimuths per ``mu``; whether the flap-and-lag variant gives the default map; where the
+        ``A = 4`` variant keeps its bound and is stable in forward flight (default variants of
+        :func:`sensitivity_data`)."""
+        lines = [_line("mu:", self.regions[0].mu_values),
+                 "variant                        tests  hover lambda0  A after step 3 (per mu)            "
+                 "stable azimuths (per mu)"]
+        for name, r, n in zip(self.names, self.regions, self.n_tests):
+            lines.append(f"{name:30s} {n:4d}  {r.lambda0[0, 0].min():12.3f}  {np.round(r.A_used[0], 3)}  "
+                         f"{r.stable[0].sum(axis=1)}")
+        fl = self.variant("flap and lag axes only (8)")
+        lines.append(_line("flap and lag axes only: the same map as the default, cell by cell:",
+                           np.array_equal(fl.category[0, :, :], self.regions[0].category[0, :, :])))
+        r4 = self.variant("A = 4")
+        ok4 = np.flatnonzero(r4.A_used[0] > 0)
+        i4 = np.flatnonzero(r4.stable[0, 1:].any(axis=1)) + 1
+        lines.append(_line("A = 4: step 3 keeps A up to mu =", r4.mu_values[ok4[-1]], "; stable cells with mu > 0 at",
+                           [(float(r4.mu_values[i]), [int(v) for v in np.round(np.degrees(r4.psi[r4.stable[0, i]]))])
+                            for i in i4],
+                           "; lambda0 =", np.round(np.unique(r4.lambda0[0, 1:ok4[-1] + 1]), 3)))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Chapter 6's sensitivity numbers (default variants of :func:`sensitivity_data`):
+        ``ch6_a4_*`` (the ``A = 4`` variant: last ``mu`` where step 3 keeps ``A``, the next,
+        its stable cells with ``mu > 0``, the first such ``mu`` and its azimuths, its start
+        region), ``ch6_bal_lambda0``, ``ch6_def_lambda0`` (hover start regions, 0.001),
+        ``ch6_diag_A0`` (hover bound with the diagonals), ``ch6_sens_fw_stable`` (stable
+        cells with ``mu > 0`` over all variants) and ``ch6_bal_scales`` (the balanced scales,
+        deg and deg/rad, as text)."""
+        r4 = self.variant("A = 4")
+        ok4 = np.flatnonzero(r4.A_used[0] > 0)
+        n4, mu4, psi4 = self.stable_forward_flight("A = 4")
+        bal = self.names.index("energy-balanced a_i")
+        return {
+            "ch6_a4_mu_last": float(r4.mu_values[ok4[-1]]),
+            "ch6_a4_mu_fail": float(r4.mu_values[ok4[-1] + 1]),
+            "ch6_a4_stable": n4,
+            "ch6_a4_stable_mu": mu4,
+            "ch6_a4_stable_psi": ", ".join(str(v) for v in psi4),
+            "ch6_a4_lambda0": round(float(r4.lambda0[0, 1].min()), 3),
+            "ch6_bal_lambda0": round(float(self.regions[bal].lambda0[0, 0].min()), 3),
+            "ch6_def_lambda0": round(float(self.regions[0].lambda0[0, 0].min()), 3),
+            "ch6_diag_A0": round(float(self.variant("axes + diagonals (72)").A_used[0, 0]), 4),
+            "ch6_sens_fw_stable": int(sum(r.stable[0, 1:].sum() for r in self.regions)),
+            "ch6_bal_scales": ", ".join(f"{v:.2f}" for v in np.degrees(self.scales[bal])),
+        }
+
+    def export(self) -> list:
+        """Named columns for :func:`rotorlyap.figures.export.figure_csv`: ``v<k>_category``
+        (mu, psi) and ``v<k>_A_used`` (mu) of variant ``k``, then ``mu`` and ``psi_deg``."""
+        return ([(f"v{i}_" + k, v) for i, r in enumerate(self.regions)
+                 for k, v in (("category", r.category[0]), ("A_used", r.A_used[0]))]
+                + [("mu", self.regions[0].mu_values), ("psi_deg", np.degrees(self.regions[0].psi))])
+
 
 def sensitivity_data(cg="forward", mu_values=(0.0, 0.0125, 0.025, 0.05, 0.1, 0.15, 0.2, 0.25), variants: dict | None = None, *, n_psi: int = 72) -> SensitivityData:
     """Run the practical Fig. 8 for each variant: ``{name: dict(A=, scales=, test_disturbances=)}``.
@@ -944,13 +2059,18 @@ def plot_sensitivity(data: SensitivityData, axes) -> None:
         if k % 4:
             ax.set_ylabel("")
     for ax in axes[len(data.names):]:
-        from matplotlib.patches import Patch
-
         ax.axis("off")
-        handles = [Patch(color=c, label=n) for c, n in zip(CATEGORY_COLORS, CATEGORY_NAMES)]
-        handles.append(Patch(facecolor="none", edgecolor="k", hatch="///", label="reverse flow reaches the root"))
-        ax.legend(handles=handles, fontsize=6.5, loc="center")
+        ax.legend(handles=category_legend_handles("reverse flow reaches the root"), fontsize=6.5, loc="center")
         break
+
+
+def figure_sensitivity(data: SensitivityData, figsize=(14, 6.6)):
+    """The book's sensitivity figure (:func:`plot_sensitivity` on a 2 x 4 grid, shared axes),
+    laid out; returns the Figure."""
+    fig, axes = subplots(2, 4, figsize=figsize, sharex=True, sharey=True)
+    plot_sensitivity(data, axes)
+    fig.tight_layout()
+    return fig
 
 
 # --------------------------------------------------------------------------------------
@@ -1002,6 +2122,56 @@ class ConvergenceData:
     mu_values: np.ndarray
     mu_check: float
     variant: str
+
+    @property
+    def default_stations_index(self) -> int:
+        """Index in :attr:`n_stations` of the model's default number of stations."""
+        return int(np.flatnonzero(self.n_stations == case_params("forward").n_stations)[0])
+
+    def deviations(self) -> tuple[float, float, float]:
+        """Largest relative deviations from the finest resolution: of the strict hover maxima
+        with 64 or more directions (the second column on), of the three quantities at the
+        default number of stations, and (absolute) of the per-azimuth fraction with
+        ``W' > 0`` on coarser azimuth grids."""
+        dev_ns = np.abs(self.sup_dW_hover[:, 1:] / self.sup_dW_hover[:, -1:] - 1).max()
+        i = self.default_stations_index
+        dev_st = max(abs(self.sup_dW_stations[i] / self.sup_dW_stations[-1] - 1),
+                     abs(self.practical_rate_stations[i] / self.practical_rate_stations[-1] - 1),
+                     np.abs(self.collective[:, i] / self.collective[:, -1] - 1).max())
+        dev_psi = np.abs(self.positive_fraction_psi[:-1] - self.positive_fraction_psi[-1]).max()
+        return float(dev_ns), float(dev_st), float(dev_psi)
+
+    def bounds(self) -> tuple[float, float]:
+        """The first two :meth:`deviations` in percent, as the power of ten they stay below
+        (:func:`rotorlyap.reporting.decade_above`)."""
+        dev_ns, dev_st, _ = self.deviations()
+        return decade_above(max(100 * dev_ns, 1e-6)), decade_above(max(100 * dev_st, 1e-6))
+
+    def summary(self) -> str:
+        """Every convergence number (J/rad, deg, fractions) and the deviation bounds."""
+        bound_ns, bound_st = self.bounds()
+        i = self.default_stations_index
+        return "\n".join([
+            _line("n_sphere:", self.n_sphere),
+            _line("strict hover max W' (J/rad):\n", np.round(self.sup_dW_hover, 2)),
+            _line("n_stations:", self.n_stations),
+            _line("collective (deg):\n", np.round(np.degrees(self.collective), 3)),
+            _line("strict hover max W' (J/rad):", np.round(self.sup_dW_stations, 2)),
+            _line(f"practical max W' at mu = {self.mu_check:g}, azimuth mean (J/rad):",
+                  np.round(self.practical_rate_stations, 1)),
+            _line("unstable fraction (flap and lag axes) per mu, for n_psi =", self.n_psi),
+            str(np.round(self.unstable_fraction_psi, 3)),
+            "W' > 0 on the sphere (flap and lag axes), fraction of azimuths per mu:",
+            str(np.round(self.positive_fraction_psi, 3)),
+            f"largest deviation: n_sphere >= {self.n_sphere[1]}: < {bound_ns:.0e} %; "
+            f"{self.n_stations[i]} stations vs {self.n_stations[-1]}: < {bound_st:.0e} %",
+            "per-azimuth fraction, largest difference from %d azimuths: %.3f" % (self.n_psi[-1], self.deviations()[2]),
+        ])
+
+    def facts(self) -> dict:
+        """``ch6_dev_ns``, ``ch6_dev_st`` (:meth:`bounds`, %) and ``ch6_dev_psi`` (0.001)."""
+        bound_ns, bound_st = self.bounds()
+        return {"ch6_dev_ns": bound_ns, "ch6_dev_st": bound_st, "ch6_dev_psi": round(self.deviations()[2], 3)}
 
 
 def convergence_data(n_sphere_values=(0, 64, 256, 1024, 4096), n_stations_values=(6, 8, 12, 16, 24),
@@ -1085,8 +2255,118 @@ def plot_convergence(data: ConvergenceData, axes) -> None:
     ax_c.legend(fontsize=7)
 
 
+def figure_convergence(data: ConvergenceData, figsize=(14, 4.0)):
+    """The book's convergence figure (:func:`plot_convergence`, three panels), laid out;
+    returns the Figure."""
+    fig, axes = subplots(1, 3, figsize=figsize)
+    plot_convergence(data, axes)
+    fig.tight_layout()
+    return fig
+
+
 # --------------------------------------------------------------------------------------
 # Tables
 # --------------------------------------------------------------------------------------
 
 
+
+#: Header of chapter 6's claims table.
+CLAIMS_HEADER = ("claim (the paper's figure numbers)", "strict (certificate)",
+                 "practical (indicator, not a certificate)", "evidence", "where we differ, and why")
+
+
+@dataclass(frozen=True)
+class ClaimsTable:
+    """Each claim of the paper's section 5 with the verdict in each reading, the evidence and
+    where we differ (chapter 6).
+
+    Attributes
+    ----------
+    header : tuple of str
+    rows : tuple of tuple of str
+        One per claim, in the order of ``header`` (the evidence cells hold MyST roles).
+    """
+
+    header: tuple
+    rows: tuple
+
+    def markdown(self) -> str:
+        """The table in Markdown (:func:`rotorlyap.figures.export.markdown_table`)."""
+        return markdown_table(self.header, self.rows)
+
+    def summary(self) -> str:
+        """One line per claim: its start and the start of each reading's verdict."""
+        lines = []
+        for r in self.rows:
+            strict, practical = r[1].split(":")[0], r[2].split(":")[0]
+            lines.append(f"{r[0][:60]:60s} | strict: {strict[:30]:30s} | practical: {practical[:30]}")
+        return "\n".join(lines)
+
+
+def claims_table(convergence: ConvergenceData, w_spheres: WSpheresData, rate: RateAzimuthData,
+                 regions: RegionMaps, flutter: HoverFlutterCheck, threshold: ThresholdData,
+                 sensitivity: SensitivityData) -> ClaimsTable:
+    """The claims table of chapter 6 from the chapter's results (nothing is recomputed)."""
+    i12 = convergence.default_stations_index
+    col = np.degrees(convergence.collective[:, i12])
+    smax_h = convergence.sup_dW_hover[:, -1]
+    reg_p, reg_s = regions.practical, regions.strict
+    hover_p, hover_s = reg_p.stable[:, 0], reg_s.stable[:, 0]
+    n4, mu4, _ = sensitivity.stable_forward_flight("A = 4")
+    adv1, ret1 = (a[1] for a in reg_p.positive_side_fractions(0))
+    adv_last, ret_last = (a[-1] for a in reg_p.positive_side_fractions(0))
+    wsph = w_spheres
+    rows = [
+        ("paper's Fig. 4: hover equilibrium angles for the three C.G. positions (a code test)",
+         "reproduced (a computation, no Liapunov reading involved)",
+         "reproduced (a computation, no Liapunov reading involved)",
+         "collective " + " / ".join(f"{c:.2f}" for c in col) + " deg for forward / neutral / backward; "
+         "equilibrium angles nearly equal; thrust = weight ({numref}`fig-hover-trim`)",
+         "the paper's figure is lost: the computation, not its numbers, can be compared"),
+        ("paper's Fig. 5: W' in hover against C.G.: stability decreases as the C.G. moves aft",
+         "not reproduced: max W' on the sphere " + " / ".join(f"{v:.1f}" for v in smax_h)
+         + " J/rad (flat, slightly decreasing aft; nothing certified)",
+         "not reproduced: max W' over the 12 axes is 0 at every C.G.",
+         "{numref}`fig-hover-rate`; linear theory agrees with the paper: largest real part "
+         + " / ".join(f"{e:+.3f}" for e in flutter.growth_rate) + " (forward / neutral / backward)",
+         "the statement is true of the model (all three stable, the damping margin shrinking aft), but the "
+         "energy cannot see it: its W' > 0 comes from the flap moment due to pitch, which does not depend on the C.G."),
+        ("paper's Fig. 6: W at mu = 0.15 (forward C.G.) against azimuth and A: W decreases as A increases",
+         f"not reproduced: inf W = {wsph.strict_inf[0].mean():.3f} ... {wsph.strict_inf[-1].mean():.2f} J for A = "
+         f"{wsph.A_values[0]:g} ... {wsph.A_values[-1]:g}",
+         f"not reproduced: min W over the axes = {wsph.practical_min[0].mean():.3f} ... "
+         f"{wsph.practical_min[-1].mean():.2f} J",
+         "{numref}`fig-w-spheres`: W grows as A^2 and does not depend on the azimuth",
+         "an energy about a constant steady state has no azimuth in it and scales as A^2; the paper's figure "
+         "must show another, or a normalised, quantity (unknown)"),
+        ("paper's Fig. 7: W' in forward flight (no separate statement)",
+         f"W' > 0 at every azimuth for mu > 0; up to {rate.strict_max[-1].max():.0f} J/rad at mu = 0.25",
+         f"W' > 0 at {int((rate.practical_max[1] > 0).sum())} of 72 azimuths already at mu = 0.05",
+         "{numref}`fig-rate-azimuth`",
+         "W' is the work of the forward-flight loads left unbalanced by the reused hover equilibrium"),
+        ("paper's Fig. 8: stable at every azimuth in hover",
+         f"not reproduced: nothing certified ({int(hover_s.sum())} of {hover_s.size} (case, azimuth) pairs)",
+         f"reproduced: {int(hover_p.sum())} of {hover_p.size} (case, azimuth) pairs stable",
+         "{numref}`fig-regions-polar`, {numref}`fig-regions-plane`",
+         "agrees with linear theory for these blades (all stable), but is an indicator, not a certificate: "
+         f"it also calls stable the hover of a blade that flutters (backward C.G. without pitch damping, "
+         f"largest real part {flutter.flutter_growth_rate:+.3f}: {flutter.flutter_stable} of 72 azimuths)"),
+        ("paper's Fig. 8: as mu grows, a region of instability appears first on the retreating side (stall flutter)",
+         f"not reproduced: nothing certified at any mu ({int(reg_s.stable.sum())} certified cells)",
+         f"not reproduced: no azimuth stable from mu = {reg_p.mu_values[1]:g} on, for every C.G. "
+         f"({int(reg_p.stable[:, 1:].sum())} stable cells); with A = 4, {n4} of 72 azimuths "
+         f"at mu = {mu4:g} and none beyond",
+         "{numref}`fig-regions-plane`, {numref}`fig-sensitivity`; per azimuth, W' > 0 on the sphere appears on both "
+         f"sides at once ({adv1:.2f} of the advancing and {ret1:.2f} of the "
+         f"retreating azimuths at mu = {reg_p.mu_values[1]:g}); threshold below 1e-7 (Glauert inflow), "
+         f"{threshold.threshold_of('drees', '12 axes'):.2g} (Drees inflow)",
+         "the hover equilibrium is not a forward-flight motion: the unbalanced loads make W' > 0 near x = 0 "
+         "at once; our quasi-steady model has no stall-flutter mechanism (no dynamic stall; the pitch-damping "
+         "couple has a constant coefficient)"),
+        ("paper's Fig. 8: at mu = 0.25 also a region on the advancing side",
+         "not reproduced", "not reproduced (the whole disc already fails)",
+         f"per azimuth: W' > 0 on the sphere on {adv_last:.2f} of the advancing and "
+         f"{ret_last:.2f} of the retreating side at mu = {reg_p.mu_values[-1]:g}",
+         "as above"),
+    ]
+    return ClaimsTable(header=CLAIMS_HEADER, rows=tuple(rows))

@@ -6,7 +6,7 @@ verdict maps of chapters 6 and 7 use the same colours for the same categories.
 
 from __future__ import annotations
 
-__all__ = ["CATEGORY_COLORS", "CG_COLORS", "CG_ROMAN", "HINGE_COLORS", "SCAN_EXTRA_COLORS"]
+__all__ = ["CATEGORY_COLORS", "CG_COLORS", "CG_ROMAN", "HINGE_COLORS", "SCAN_EXTRA_COLORS", "figure", "finish", "subplots"]
 
 HINGE_COLORS = {"flap": "tab:blue", "lag": "tab:green", "pitch": "tab:red"}
 """Colour of each hinge (and of the modes named after it)."""
@@ -24,3 +24,33 @@ the practical reading's 'stable' where W' > 0 somewhere; unstable (rotorlyap.fig
 SCAN_EXTRA_COLORS = ("#969696", "#f0f0f0")
 """Two more categories of the validation scans: no quadratic function (unstable linearisation)
 and no periodic motion found."""
+
+
+def subplots(*args, **kwargs):
+    """``matplotlib.pyplot.subplots``, the figure closed in pyplot at once.
+
+    Made by pyplot, the figure is drawn by the current backend (in a notebook, pyplot's import
+    turns on the inline display that renders it where it is glued); closed at once, it is
+    returned to the caller and never shown by itself. Returns ``(figure, axes)``.
+    """
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(*args, **kwargs)
+    plt.close(fig)
+    return fig, axes
+
+
+def figure(**kwargs):
+    """``matplotlib.pyplot.figure``, closed in pyplot at once (see :func:`subplots`)."""
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(**kwargs)
+    plt.close(fig)
+    return fig
+
+
+def finish(fig, **layout):
+    """Lay out a figure made by :func:`subplots` or :func:`figure` (``tight_layout(**layout)``)
+    and return it."""
+    fig.tight_layout(**layout)
+    return fig

@@ -1,27 +1,127 @@
-"""Figures of the theorem and algorithm chapters: a data function and a drawing function each.
+"""Figures of the theorem and algorithm chapters (1 and 2): data, summaries, facts, drawings.
 
-Data functions return frozen dataclasses of arrays (no plotting); drawing functions take
-that data and a matplotlib ``Axes`` and draw it. Notebooks call both, and print a rounded
-summary of the data so that nbval checks what the figure shows.
+Per figure: a data function returning a frozen dataclass of arrays (no plotting); its
+``summary()``, the rounded text the chapter prints (what nbval compares, since images are
+not); its ``facts()``, the rounded numbers the chapter's text quotes, keyed by glue name; a
+``plot_*`` function drawing the data on a matplotlib ``Axes``; and a ``figure_*`` function
+that creates the figure, draws it and returns it. A chapter's cell is then one call per step::
+
+    history = theory.norm_history_data(toy, res, [0, 18, 36, 54], n_starts=32, n_periods=8)
+    fig = theory.figure_norm_history(history)
+    glue("fig_norm_history", fig, display=False)
+    figure_csv(history, "_data/fig-norm-history.csv")
+    print(history.summary())
+    glue_facts(history.facts())
+
+The certificate itself (:class:`rotorlyap.methods.lyapunov.TechnicalStabilityResult`) is
+summarised by :func:`certificate_summary` and :func:`steps_summary`, and quoted through
+:func:`steps_facts`. All quantities are dimensionless (the systems of
+:mod:`rotorlyap.methods.examples`); azimuths are in radians unless a name ends in ``_deg``.
+Every number is rounded to the digits the search or integration behind it determines
+(:mod:`rotorlyap.reporting`): three or four decimals.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..methods.examples import PeriodicSystem
 from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
 from ..methods.simulation import simulate
+from .style import finish, subplots
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 __all__ = [
-    "PhasePortraitData", "phase_portrait_data", "plot_phase_portrait",
-    "NormHistoryData", "norm_history_data", "plot_norm_history",
+    "certificate_summary", "steps_summary", "steps_facts",
+    "PhasePortraitData", "phase_portrait_data", "plot_phase_portrait", "figure_phase_portrait",
+    "NormHistoryData", "norm_history_data", "plot_norm_history", "figure_norm_history",
     "LevelSetData", "level_set_data", "plot_level_sets",
-    "ConvergenceData", "convergence_data", "plot_convergence",
-    "plot_start_region", "plot_max_norm",
+    "LevelSetsData", "level_sets_data", "figure_level_sets",
+    "StartRegionData", "start_region_data", "plot_start_region", "figure_start_region",
+    "MaxNormData", "max_norm_data", "plot_max_norm", "figure_max_norm",
+    "ConvergenceData", "convergence_data", "plot_convergence", "figure_convergence",
 ]
+
+
+def certificate_summary(result: TechnicalStabilityResult) -> str:
+    """The certificate in two lines: its message, then ``A``, ``alpha`` and the range of ``lambda0``.
+
+    Parameters
+    ----------
+    result : TechnicalStabilityResult
+        From :func:`rotorlyap.technical_stability`.
+
+    Returns
+    -------
+    str
+        ``A``, ``alpha`` and ``lambda0`` (scaled norm and units of ``W``, dimensionless here)
+        to four decimals.
+    """
+    return (
+        f"{result.message}\n"
+        f"A = {result.A:.4f}, alpha = {result.alpha:.4f}, "
+        f"lambda0 from {np.min(result.lambda0):.4f} to {np.max(result.lambda0):.4f}"
+    )
+
+
+def steps_summary(result: TechnicalStabilityResult) -> str:
+    """The certificate step by step (steps 3 to 6 of the algorithm), as chapter 2 prints it.
+
+    Returns
+    -------
+    str
+        The result's short ``repr`` and message, then one line per step: the largest ``W'``
+        on the requested sphere (step 3, four decimals), ``A`` and ``alpha`` (steps 3 and 4,
+        four and five decimals), the smallest and largest ``lambda0`` with their azimuths in
+        degrees (step 5), the largest ``W'`` on the shells (two significant digits) and the
+        number of certified azimuths (step 6).
+    """
+    lam = np.asarray(result.lambda0)
+    psi_deg = np.degrees(result.psi)
+    return "\n".join([
+        repr(result),
+        result.message,
+        "step 3: largest W' on ||x|| = %.2f: %.4f" % (result.A_requested, result.step3_max_dW),
+        "step 3: A = %.4f;  step 4: alpha = %.5f" % (result.A, result.alpha),
+        "step 5: lambda0 from %.4f (psi = %.0f deg) to %.4f (psi = %.0f deg)" % (
+            lam.min(), psi_deg[lam.argmin()], lam.max(), psi_deg[lam.argmax()]),
+        "step 6: largest W' on the shells: %.2e; stable at %d of %d azimuths" % (
+            np.max(result.max_dW), np.sum(result.stable), np.size(result.stable)),
+    ])
+
+
+def steps_facts(result: TechnicalStabilityResult, prefix: str = "ch2") -> dict:
+    """The numbers of the six steps that the text quotes, keyed by glue name.
+
+    Parameters
+    ----------
+    result : TechnicalStabilityResult
+        From :func:`rotorlyap.technical_stability`.
+    prefix : str
+        Glue-name prefix of the chapter quoting them.
+
+    Returns
+    -------
+    dict
+        ``{prefix}_A_req`` (as requested), ``{prefix}_step3`` (largest ``W'`` on the requested
+        sphere, three decimals), ``{prefix}_A``, ``{prefix}_alpha``, ``{prefix}_lam_min``,
+        ``{prefix}_lam_max`` (four decimals) and ``{prefix}_n_stable`` (certified azimuths).
+    """
+    return {
+        f"{prefix}_A_req": float(result.A_requested),
+        f"{prefix}_step3": round(float(result.step3_max_dW), 3),
+        f"{prefix}_A": round(float(result.A), 4),
+        f"{prefix}_alpha": round(float(result.alpha), 4),
+        f"{prefix}_lam_min": round(float(np.min(result.lambda0)), 4),
+        f"{prefix}_lam_max": round(float(np.max(result.lambda0)), 4),
+        f"{prefix}_n_stable": int(np.sum(result.stable)),
+    }
 
 
 def _circle(radius: float, scales: np.ndarray, n: int = 361) -> np.ndarray:
@@ -58,6 +158,22 @@ class PhasePortraitData:
     outside_escaped: tuple
     circle_A: np.ndarray
     circle_lambda0: np.ndarray
+
+    @property
+    def max_inside_norm(self) -> float:
+        """Largest Euclidean norm, in the plotted coordinates ``(y, y')``, of the motions started inside."""
+        return float(np.sqrt((self.inside**2).sum(axis=2)).max())
+
+    def summary(self) -> str:
+        """``A`` and ``lambda0(psi0)``, the largest norm reached from inside (four decimals), and
+        for each motion started outside ``A`` its start (two decimals) and whether it escaped."""
+        lines = [
+            "phase portrait: A = %.4f, lambda0(psi0) = %.4f" % (self.A, self.lambda0),
+            "largest norm of the motions started inside lambda0: %.4f" % self.max_inside_norm,
+        ]
+        for path, esc in zip(self.outside, self.outside_escaped):
+            lines.append("motion started at (y, y') = (%.2f, %.2f): %s" % (*path[0], "escapes" if esc else "bounded"))
+        return "\n".join(lines)
 
 
 def phase_portrait_data(
@@ -133,6 +249,27 @@ def plot_phase_portrait(data: PhasePortraitData, ax, *, labels=("$y$", "$y'$")) 
     ax.legend(loc="upper right", fontsize=7, framealpha=0.9)
 
 
+def figure_phase_portrait(data: PhasePortraitData, *, title: str | None = None) -> Figure:
+    """A new 7 x 4.2 in figure of :class:`PhasePortraitData` (:func:`plot_phase_portrait`).
+
+    Parameters
+    ----------
+    data : PhasePortraitData
+    title : str, optional
+        Axes title (the system's name, say).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
+    """
+    fig, ax = subplots(figsize=(7, 4.2))
+    plot_phase_portrait(data, ax)
+    if title is not None:
+        ax.set_title(title)
+    return finish(fig)
+
+
 @dataclass(frozen=True)
 class NormHistoryData:
     """Norm of simulated motions against azimuth, with ``A`` and ``lambda0(psi)``.
@@ -149,6 +286,10 @@ class NormHistoryData:
         For each start azimuth, norms of its motions, shape ``(k, m)``.
     max_ratio : float
         Largest ``||x|| / A`` over all motions: below 1 is the theorem's conclusion.
+    n_periods : float
+        Simulated length of every motion, in periods.
+    fraction : float
+        Start radius of the motions as a fraction of ``lambda0`` at their start azimuth.
     """
 
     psi_grid: np.ndarray
@@ -157,6 +298,28 @@ class NormHistoryData:
     psi: list
     norm: list
     max_ratio: float
+    n_periods: float
+    fraction: float
+
+    @property
+    def n_motions(self) -> int:
+        """Number of simulated motions, over all start azimuths."""
+        return int(sum(n.shape[1] for n in self.norm))
+
+    def summary(self) -> str:
+        """The largest ``||x|| / A`` over all motions (three decimals), with their number and length."""
+        return "largest ||x|| / A over %d motions and %g periods: %.3f" % (
+            self.n_motions, self.n_periods, self.max_ratio)
+
+    def facts(self, prefix: str = "ch1") -> dict:
+        """``{prefix}_max_ratio``, and the certificate the motions test: ``{prefix}_A``,
+        ``{prefix}_lam_min``, ``{prefix}_lam_max`` (scaled norm), all to three decimals."""
+        return {
+            f"{prefix}_max_ratio": round(float(self.max_ratio), 3),
+            f"{prefix}_A": round(float(self.A), 3),
+            f"{prefix}_lam_min": round(float(np.min(self.lambda0)), 3),
+            f"{prefix}_lam_max": round(float(np.max(self.lambda0)), 3),
+        }
 
 
 def norm_history_data(
@@ -173,6 +336,23 @@ def norm_history_data(
 
     Start directions are spread deterministically on the sphere (a seeded generator), so
     the same call gives the same motions.
+
+    Parameters
+    ----------
+    system : PeriodicSystem
+        The system (see :mod:`rotorlyap.methods.examples`).
+    result : TechnicalStabilityResult
+        Its certificate from :func:`rotorlyap.technical_stability`.
+    start_indices : iterable of int
+        Indices of the start azimuths in ``result.psi``.
+    n_starts : int
+        Motions per start azimuth.
+    n_periods : float
+        Simulated length, in periods.
+    fraction : float
+        Start radius as a fraction of ``lambda0`` at the start azimuth (scaled norm).
+    seed : int
+        Seed of the start directions.
     """
     rng = np.random.default_rng(seed)
     n = result.scales.size
@@ -185,7 +365,8 @@ def norm_history_data(
         psis.append(sim.psi)
         norms.append(sim.norm)
         worst = max(worst, float(sim.max_norm.max()) / result.A)
-    return NormHistoryData(result.psi, result.lambda0, result.A, psis, norms, worst)
+    return NormHistoryData(result.psi, result.lambda0, result.A, psis, norms, worst,
+                           n_periods=float(n_periods), fraction=float(fraction))
 
 
 def plot_norm_history(data: NormHistoryData, ax, *, unit: str = "rev") -> None:
@@ -208,6 +389,21 @@ def plot_norm_history(data: NormHistoryData, ax, *, unit: str = "rev") -> None:
     ax.set_xlabel(r"azimuth $\psi$ / $2\pi$ (periods)")
     ax.set_ylabel(r"scaled norm $\|x(\psi)\|$")
     ax.legend(loc="upper right", fontsize=8, ncol=2)
+
+
+def figure_norm_history(data: NormHistoryData) -> Figure:
+    """A new 8 x 3.6 in figure of :class:`NormHistoryData` (:func:`plot_norm_history`), titled
+    with the start radius.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
+    """
+    fig, ax = subplots(figsize=(8, 3.6))
+    plot_norm_history(data, ax)
+    ax.set_title(rf"Norm of motions started on ${data.fraction:g}\,\lambda_0(\psi_0)$")
+    return finish(fig)
 
 
 @dataclass(frozen=True)
@@ -242,6 +438,20 @@ class LevelSetData:
     lambda0: float
     scales: np.ndarray
     positive_fraction_requested: float
+
+    def subsampled(self, step: int) -> "LevelSetData":
+        """The same data on every ``step``-th line of the grid (for a smaller CSV file)."""
+        if int(step) < 1:
+            raise ValueError(f"step must be a positive integer, got {step!r}")
+        k = slice(None, None, int(step))
+        return dataclasses.replace(self, y=self.y[k], v=self.v[k], W=self.W[k, k], dW=self.dW[k, k])
+
+    def summary(self) -> str:
+        """One line: the azimuth (deg), ``lambda0`` (four decimals), the fraction of the requested
+        sphere where ``W' > 0`` and the range of ``W'`` on the grid (three decimals)."""
+        return ("psi = %3.0f deg: lambda0 = %.4f; W' > 0 on %.3f of the requested sphere; "
+                "W' on the grid from %.3f to %.3f" % (np.degrees(self.psi), self.lambda0,
+                self.positive_fraction_requested, self.dW.min(), self.dW.max()))
 
 
 def level_set_data(
@@ -286,6 +496,82 @@ def plot_level_sets(data: LevelSetData, ax, *, labels=("$y$", "$y'$")) -> None:
 
 
 @dataclass(frozen=True)
+class LevelSetsData:
+    """The two panels of the level-set figure: :class:`LevelSetData` at two telling azimuths.
+
+    Attributes
+    ----------
+    smallest : LevelSetData
+        At the azimuth of the smallest start region ``lambda0``.
+    tightest : LevelSetData
+        At the azimuth where the largest ``W'`` on the shell (step 6) comes closest to zero.
+    """
+
+    smallest: LevelSetData
+    tightest: LevelSetData
+
+    @property
+    def panels(self) -> tuple[LevelSetData, LevelSetData]:
+        """``(smallest, tightest)``: the figure's left and right panel."""
+        return (self.smallest, self.tightest)
+
+    def export(self, step: int = 3) -> list[LevelSetData]:
+        """What the CSV file holds: both panels on every ``step``-th line of the grid."""
+        return [panel.subsampled(step) for panel in self.panels]
+
+    def summary(self) -> str:
+        """One line per panel (:meth:`LevelSetData.summary`)."""
+        return "\n".join(panel.summary() for panel in self.panels)
+
+    def facts(self, prefix: str = "ch2") -> dict:
+        """Both azimuths (``{prefix}_psi_small``, ``{prefix}_psi_tight``, whole degrees) and the
+        percentage of the requested sphere where ``W' > 0`` at each (``{prefix}_pos_frac_small``,
+        ``{prefix}_pos_frac_tight``, one decimal)."""
+        facts = {}
+        for name, panel in (("small", self.smallest), ("tight", self.tightest)):
+            facts[f"{prefix}_psi_{name}"] = int(round(np.degrees(panel.psi)))
+        for name, panel in (("small", self.smallest), ("tight", self.tightest)):
+            facts[f"{prefix}_pos_frac_{name}"] = round(100 * panel.positive_fraction_requested, 1)
+        return facts
+
+
+def level_sets_data(
+    system: PeriodicSystem, result: TechnicalStabilityResult, *, n_grid: int = 301, extent: float = 1.2
+) -> LevelSetsData:
+    """:func:`level_set_data` at the smallest start region and where ``W'`` is tightest on the shell.
+
+    Parameters
+    ----------
+    system : PeriodicSystem
+        A 2-state system.
+    result : TechnicalStabilityResult
+        Its certificate; the azimuths are ``argmin(result.lambda0)`` and ``argmax(result.max_dW)``.
+    n_grid, extent : int, float
+        As for :func:`level_set_data`.
+    """
+    j_small = int(np.argmin(result.lambda0))
+    j_tight = int(np.argmax(result.max_dW))
+    return LevelSetsData(
+        smallest=level_set_data(system, result, j_small, n_grid=n_grid, extent=extent),
+        tightest=level_set_data(system, result, j_tight, n_grid=n_grid, extent=extent),
+    )
+
+
+def figure_level_sets(data: LevelSetsData) -> Figure:
+    """A new 11 x 5.4 in figure, the two panels of :class:`LevelSetsData` side by side.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
+    """
+    fig, axes = subplots(1, 2, figsize=(11, 5.4))
+    for ax, panel in zip(axes, data.panels):
+        plot_level_sets(panel, ax)
+    return finish(fig)
+
+
+@dataclass(frozen=True)
 class ConvergenceData:
     """Results of the algorithm against the sampling resolution.
 
@@ -307,9 +593,52 @@ class ConvergenceData:
     A_raw: np.ndarray
     lambda0_mean_raw: np.ndarray
 
+    @property
+    def largest_deviation(self) -> float:
+        """Largest relative deviation of the refined ``A`` and mean ``lambda0`` from the finest
+        (last) resolution, over the resolutions with quasi-random directions (``n_sphere > 0``);
+        ``nan`` if there are none."""
+        sampled = np.asarray(self.n_sphere) > 0
+        if not sampled.any():
+            return float("nan")
+        dev = np.concatenate([self.A[sampled] / self.A[-1] - 1,
+                              self.lambda0_mean[sampled] / self.lambda0_mean[-1] - 1])
+        return float(np.abs(dev).max())
+
+    def summary(self) -> str:
+        """The resolutions, ``A`` and mean ``lambda0`` with and without refinement (four
+        decimals), and :attr:`largest_deviation` in per cent (two decimals)."""
+        sampled = np.asarray(self.n_sphere)[np.asarray(self.n_sphere) > 0]
+        lowest = int(sampled.min()) if sampled.size else 0
+        return "\n".join([
+            f"n_sphere:          {self.n_sphere}",
+            f"A (refined):       {np.round(self.A, 4)}",
+            f"A (sampling only): {np.round(self.A_raw, 4)}",
+            f"mean lambda0 (refined):       {np.round(self.lambda0_mean, 4)}",
+            f"mean lambda0 (sampling only): {np.round(self.lambda0_mean_raw, 4)}",
+            "largest deviation from the finest, refined, n_sphere >= %d: %.2f %%"
+            % (lowest, 100 * self.largest_deviation),
+        ])
+
+    def facts(self, prefix: str = "ch2") -> dict:
+        """``{prefix}_conv_dev``: :attr:`largest_deviation` in per cent, two decimals."""
+        return {f"{prefix}_conv_dev": round(100 * self.largest_deviation, 2)}
+
 
 def convergence_data(system: PeriodicSystem, A: float, n_sphere_values, *, n_psi: int = 24) -> ConvergenceData:
-    """Run :func:`technical_stability` at several sampling resolutions, with and without refinement."""
+    """Run :func:`technical_stability` at several sampling resolutions, with and without refinement.
+
+    Parameters
+    ----------
+    system : PeriodicSystem
+        The system and its Liapunov function.
+    A : float
+        Requested bound (scaled norm).
+    n_sphere_values : sequence of int
+        Quasi-random directions per sphere, in increasing order (the last is the reference).
+    n_psi : int
+        Azimuths of every run.
+    """
     rows, raw = [], []
     for ns in n_sphere_values:
         r = technical_stability(system.f, system.W, A, dim=system.dim, dW=system.dW, n_psi=n_psi, n_sphere=int(ns))
@@ -338,18 +667,74 @@ def plot_convergence(data: ConvergenceData, ax) -> None:
     ax.legend(fontsize=8)
 
 
-def plot_start_region(result: TechnicalStabilityResult, ax) -> None:
+def figure_convergence(data: ConvergenceData) -> Figure:
+    """A new 7.5 x 3.8 in figure of :class:`ConvergenceData` (:func:`plot_convergence`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
+    """
+    fig, ax = subplots(figsize=(7.5, 3.8))
+    plot_convergence(data, ax)
+    return finish(fig)
+
+
+@dataclass(frozen=True)
+class StartRegionData:
+    """Steps 5 and 6 at every azimuth of a certificate: the start region and ``max W'`` on the shell.
+
+    Attributes
+    ----------
+    psi_deg : numpy.ndarray
+        The azimuths ``psi_j`` (deg).
+    lambda0 : numpy.ndarray
+        Start-region radius at each azimuth (scaled norm; step 5).
+    A, A_requested : float
+        The bound after step 3 and as requested (scaled norm).
+    max_dW : numpy.ndarray
+        Largest ``W'`` found on the shell ``lambda0_j < ||x|| <= A`` (step 6).
+    """
+
+    psi_deg: np.ndarray
+    lambda0: np.ndarray
+    A: float
+    A_requested: float
+    max_dW: np.ndarray
+
+    def _quarters(self) -> tuple[np.ndarray, str]:
+        """Indices of the azimuths nearest a quarter period apart from the first, and their label."""
+        n = self.psi_deg.size
+        idx = np.unique(np.round(np.arange(4) * n / 4).astype(int) % n)
+        return idx, ", ".join("%.0f" % d for d in self.psi_deg[idx])
+
+    def summary(self) -> str:
+        """``lambda0`` (four decimals) and ``max W'`` (six decimals) at four azimuths a quarter
+        period apart."""
+        idx, label = self._quarters()
+        return (f"lambda0 at psi = {label} deg: {np.round(self.lambda0[idx], 4)}\n"
+                f"max W' on the shell at psi = {label} deg: {np.round(self.max_dW[idx], 6)}")
+
+
+def start_region_data(result: TechnicalStabilityResult) -> StartRegionData:
+    """Steps 5 and 6 of ``result`` at its azimuths (:class:`StartRegionData`)."""
+    return StartRegionData(psi_deg=np.degrees(result.psi), lambda0=np.asarray(result.lambda0),
+                           A=float(result.A), A_requested=float(result.A_requested),
+                           max_dW=np.asarray(result.max_dW))
+
+
+def plot_start_region(data: StartRegionData, ax) -> None:
     """Draw ``lambda0(psi)`` and ``A`` (left axis) and the step-6 ``max W'`` (right axis)."""
-    deg = np.degrees(result.psi)
-    ax.plot(deg, result.lambda0, "o-", ms=3, color="tab:blue", label=r"$\lambda_0(\psi_j)$ (step 5)")
-    ax.axhline(result.A, color="tab:green", lw=2, label="$A$ after step 3")
-    ax.axhline(result.A_requested, color="0.5", ls="--", label="requested $A$")
-    ax.set_ylim(0, 1.1 * result.A_requested)
+    deg = data.psi_deg
+    ax.plot(deg, data.lambda0, "o-", ms=3, color="tab:blue", label=r"$\lambda_0(\psi_j)$ (step 5)")
+    ax.axhline(data.A, color="tab:green", lw=2, label="$A$ after step 3")
+    ax.axhline(data.A_requested, color="0.5", ls="--", label="requested $A$")
+    ax.set_ylim(0, 1.1 * data.A_requested)
     ax.set_xlabel(r"azimuth $\psi_j$ (deg)")
     ax.set_ylabel("scaled norm")
     ax.set_xticks(np.arange(0, 361, 45))
     ax2 = ax.twinx()
-    ax2.plot(deg, result.max_dW, "-", color="tab:red", lw=1, label=r"max $W'$ on the shell (step 6)")
+    ax2.plot(deg, data.max_dW, "-", color="tab:red", lw=1, label=r"max $W'$ on the shell (step 6)")
     ax2.axhline(0, color="tab:red", lw=0.5, ls=":")
     ax2.set_ylabel(r"max $W'$ on $\lambda_0 < \|x\| \leq A$", color="tab:red")
     lines = ax.get_legend_handles_labels()
@@ -357,14 +742,69 @@ def plot_start_region(result: TechnicalStabilityResult, ax) -> None:
     ax.legend(lines[0] + lines2[0], lines[1] + lines2[1], loc="center left", fontsize=8)
 
 
-def plot_max_norm(data: NormHistoryData, ax) -> None:
+def figure_start_region(data: StartRegionData) -> Figure:
+    """A new 8 x 3.6 in figure of :class:`StartRegionData` (:func:`plot_start_region`, two y axes).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
+    """
+    fig, ax = subplots(figsize=(8, 3.6))
+    plot_start_region(data, ax)
+    return finish(fig)
+
+
+@dataclass(frozen=True)
+class MaxNormData:
+    """The largest norm each simulated motion reaches, relative to ``A``, by start azimuth.
+
+    One row per motion, the columns of the figure's CSV file.
+
+    Attributes
+    ----------
+    start_psi_deg : numpy.ndarray
+        Start azimuth of each motion (deg).
+    max_norm_over_A : numpy.ndarray
+        Its largest scaled norm over the simulation, divided by ``A``.
+    start_radius_over_A : numpy.ndarray
+        The start-region radius ``lambda0`` at its start azimuth, divided by ``A``.
+    """
+
+    start_psi_deg: np.ndarray
+    max_norm_over_A: np.ndarray
+    start_radius_over_A: np.ndarray
+
+    @property
+    def max_ratio(self) -> float:
+        """Largest ``||x|| / A`` over all motions: below 1 is the theorem's conclusion."""
+        return float(np.max(self.max_norm_over_A))
+
+    def summary(self) -> str:
+        """The number of motions and the largest ``||x|| / A`` (three decimals)."""
+        return "%d motions; largest ||x|| / A: %.3f" % (self.start_psi_deg.size, self.max_ratio)
+
+    def facts(self, prefix: str = "ch2") -> dict:
+        """``{prefix}_max_ratio``: :attr:`max_ratio` to three decimals."""
+        return {f"{prefix}_max_ratio": round(self.max_ratio, 3)}
+
+
+def max_norm_data(history: NormHistoryData) -> MaxNormData:
+    """Reduce simulated motions (:func:`norm_history_data`) to one row per motion."""
+    start_deg = np.concatenate([np.full(n.shape[1], np.degrees(p[0])) for p, n in zip(history.psi, history.norm)])
+    return MaxNormData(
+        start_psi_deg=start_deg,
+        max_norm_over_A=np.concatenate([n.max(axis=0) for n in history.norm]) / history.A,
+        start_radius_over_A=np.interp(start_deg, np.degrees(history.psi_grid), history.lambda0) / history.A,
+    )
+
+
+def plot_max_norm(data: MaxNormData, ax) -> None:
     """Draw the largest ``||x|| / A`` of every simulated motion against its start azimuth."""
-    for p, nrm in zip(data.psi, data.norm):
-        ratio = nrm.max(axis=0) / data.A
-        ax.plot(np.full(ratio.size, np.degrees(p[0])), ratio, "o", color="0.3", ms=3, alpha=0.5)
+    ax.plot(data.start_psi_deg, data.max_norm_over_A, "o", color="0.3", ms=3, alpha=0.5)
     ax.axhline(1.0, color="tab:green", lw=2, label=r"$\|x\| = A$")
-    lam = np.interp([np.degrees(p[0]) for p in data.psi], np.degrees(data.psi_grid), data.lambda0)
-    ax.plot([np.degrees(p[0]) for p in data.psi], lam / data.A, "_", color="tab:blue", ms=14, mew=2,
+    starts, first = np.unique(data.start_psi_deg, return_index=True)
+    ax.plot(starts, data.start_radius_over_A[first], "_", color="tab:blue", ms=14, mew=2,
             label=r"start radius $\lambda_0(\psi_0) / A$")
     ax.plot([], [], "o", color="0.3", ms=3, label="largest $\\|x\\| / A$ of one motion")
     ax.set_ylim(0, 1.1)
@@ -372,3 +812,16 @@ def plot_max_norm(data: NormHistoryData, ax) -> None:
     ax.set_ylabel(r"$\max_{\psi \geq \psi_0} \|x(\psi)\| / A$")
     ax.set_xticks(np.arange(0, 361, 45))
     ax.legend(loc="lower right", fontsize=8)
+
+
+def figure_max_norm(data: MaxNormData) -> Figure:
+    """A new 8 x 3.4 in figure of :class:`MaxNormData` (:func:`plot_max_norm`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
+    """
+    fig, ax = subplots(figsize=(8, 3.4))
+    plot_max_norm(data, ax)
+    return finish(fig)

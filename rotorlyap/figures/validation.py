@@ -12,6 +12,21 @@ drawing functions take that data and matplotlib ``Axes``. The chain is
 4. :func:`validation_data`: simulated motions against those verdicts (:mod:`rotorlyap.methods.validation`);
 5. :func:`motion_data`: what the motion does where a reading marks instability.
 
+Beside them, the chapter's smaller computations: :func:`inflow_data` (the distance of the
+hover equilibrium from the periodic motion with two inflow models), :func:`fold_data` (the end
+of the backward-C.G. branch), :func:`quadratic_data` (the quadratic Liapunov functions),
+:func:`origin_data` (``W'`` near the origin), :func:`search_check` (the certificates with a
+finer search), :func:`validation_set` (every simulated motion of the chapter),
+:func:`flutter_cycle` and :func:`far_motion` (the limit cycle and the distant periodic motion
+of the long simulations).
+
+Every data object has ``summary()``, the text the chapter prints (rounded to the digits the
+computation determines, README "What a committed output may print"), and ``facts()``, the
+numbers the chapter's text quotes, ``{glue name: rounded value}``
+(:func:`rotorlyap.figures.export.glue_facts`). Each figure has a ``figure_*`` function that
+creates, draws and returns it (closed in pyplot, so that only its glued copy is shown), and the
+figure's data object an ``export()`` for :func:`rotorlyap.figures.export.figure_csv`.
+
 Conventions as :mod:`rotorlyap.figures.paper`: ``psi = 0`` over the tail, ``psi = 90 deg``
 the advancing side; growth rates and frequencies per rev.
 """
@@ -19,32 +34,43 @@ the advancing side; growth rates and frequencies per rev.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..analysis.floquet import floquet_sweep
-from ..analysis.functions import optimised_quadratic_function, quadratic_function
+from ..analysis.floquet import blade_floquet, floquet_sweep
+from ..analysis.functions import energy_function, optimised_quadratic_function, quadratic_function
 from ..analysis.stability import blade_stability
 from ..conventions import DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
 from ..errors import NotAsymptoticallyStableError, PeriodicMotionError
 from ..methods.sampling import sphere_extremum, unit_sphere_points
 from ..methods.simulation import scaled_norm, simulate
-from ..methods.validation import long_run, validate
+from ..methods.validation import last_revolution, long_run, validate
 from ..model.blade import Blade
+from ..model.modes import derived_quantities
 from ..model.parameters import BladeParameters
 from ..model.steady import disturbed_rhs, periodic_motion, tabulate_motion
-from .export import markdown_table  # noqa: F401  (chapter 7 writes its tables with it)
-from .style import CATEGORY_COLORS, HINGE_COLORS, SCAN_EXTRA_COLORS
+from ..reporting import decade_above, format_small, format_small_array
+from .export import markdown_table
+from .style import CATEGORY_COLORS, HINGE_COLORS, SCAN_EXTRA_COLORS, finish, subplots
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 __all__ = [
     "CASES", "MU_FLOQUET", "MU_SCAN", "CANDIDATES", "Candidate", "SCAN_CATEGORY_NAMES",
-    "SteadyMotions", "steady_motions", "plot_steady_motions",
-    "FloquetData", "floquet_data", "plot_floquet",
-    "ScanData", "scan_data", "plot_scan",
+    "CONFUSION_HEADER", "grid_summary", "max_distance",
+    "SteadyMotions", "steady_motions", "plot_steady_motions", "figure_steady_motions",
+    "InflowData", "inflow_data", "FoldData", "fold_data",
+    "FloquetData", "floquet_data", "plot_floquet", "figure_floquet",
+    "QuadraticData", "quadratic_data",
+    "OriginData", "origin_data", "plot_origin", "figure_origin",
+    "ScanData", "scan_data", "plot_scan", "figure_scan", "scan_legend_handles",
+    "SearchCheck", "search_check",
     "validation_data", "confusion_rows", "plot_validation",
-    "MotionData", "motion_data", "plot_motions", "OriginData", "origin_data", "plot_origin",
-    "scan_legend_handles",
-    "markdown_table",
+    "ValidationData", "validation_set", "figure_validation",
+    "MotionData", "motion_data", "plot_motions", "figure_motions", "points_per_revolution",
+    "FlutterCycle", "flutter_cycle", "FarMotion", "far_motion",
 ]
 
 #: The paper's three cases.
@@ -56,6 +82,56 @@ MU_FLOQUET = tuple(float(m) for m in np.round(np.arange(0.0, 0.2501, 0.025), 3))
 #: Advance ratios of the scans (each costs a sphere search per azimuth and function).
 MU_SCAN = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
 
+#: Short names of the cases in the chapter's glue names (``ch7_ncert_q_neu``, ...).
+_CASE_TAGS = {"forward": "fw", "neutral": "neu", "backward": "bwd"}
+
+
+def _join(*parts) -> str:
+    """The line ``print(*parts)`` writes, without its newline."""
+    return " ".join(str(p) for p in parts)
+
+
+def _mu_list(values) -> str:
+    """Advance ratios as the chapter's text quotes them: ``"0.2, 0.25"``."""
+    return ", ".join(f"{float(m):g}" for m in values)
+
+
+def grid_summary() -> str:
+    """The norm's scales (deg and deg per rad), the bound ``A`` and the advance-ratio grids.
+
+    Returns
+    -------
+    str
+        Three lines, as chapter 7 prints them.
+    """
+    return "\n".join([
+        _join("scales a_i (deg, deg/rad):", np.round(np.degrees(DEFAULT_SCALES), 2), "; A =", DEFAULT_A),
+        _join("advance ratios, Floquet:", MU_FLOQUET),
+        _join("advance ratios, scans:  ", MU_SCAN),
+    ])
+
+
+def max_distance(motion, state: np.ndarray, n_psi: int = 256) -> float:
+    """Largest distance of a periodic motion from a constant state in the scaled norm.
+
+    Parameters
+    ----------
+    motion : object with ``xi(psi)``
+        A periodic motion (:class:`~rotorlyap.model.steady.PeriodicMotion`,
+        :class:`~rotorlyap.model.steady.TabulatedMotion`, ...), states in rad and rad/rad.
+    state : array_like
+        The constant state, shape (6,), rad and rad/rad.
+    n_psi : int
+        Uniform azimuths over one revolution at which the distance is evaluated.
+
+    Returns
+    -------
+    float
+        ``max_psi ||xi(psi) - state||`` in the scaled norm of
+        :data:`rotorlyap.conventions.DEFAULT_SCALES` (norm units).
+    """
+    grid = 2 * np.pi * np.arange(n_psi) / n_psi
+    return float(scaled_norm(motion.xi(grid) - state, DEFAULT_SCALES).max())
 
 
 def _edges(values, lo=None) -> np.ndarray:
@@ -126,6 +202,46 @@ class SteadyMotions:
                 "harmonics_deg": self.harmonics_deg, "psi_deg": np.degrees(self.psi_plot),
                 "angles_deg": self.angles_deg, "hover_deg": self.hover_deg}
 
+    def missing(self) -> dict:
+        """``{case: [advance ratios without a periodic motion]}``."""
+        return {case: [float(m) for m in self.mu_values[~self.found[i]]] for i, case in enumerate(self.cases)}
+
+    def summary(self) -> str:
+        """Per case: found, distance of the hover equilibrium (norm units) and residual
+        (bounded by :func:`rotorlyap.reporting.format_small`) at each advance ratio; the first
+        harmonics of the forward C.G. at the last advance ratio (deg); the advance ratios
+        without a periodic motion."""
+        lines = [_join("mu:", self.mu_values)]
+        for i, case in enumerate(self.cases):
+            lines += [_join(f"{case:9s} found:   ", self.found[i].astype(int)),
+                      _join(f"{'':9s} distance:", np.round(self.distance[i], 2)),
+                      _join(f"{'':9s} residual:", format_small_array(self.residual[i]))]
+        lines.append(f"forward C.G., mu = {self.mu_values[-1]:g}, (mean, cos, sin) harmonics (deg):")
+        for name, row in zip(("flap", "lag", "pitch"), self.harmonics_deg[self.cases.index("forward"), -1]):
+            lines.append(_join(f"  {name:5s}", np.round(row, 2)))
+        lines.append(_join("advance ratios without a periodic motion:", self.missing()))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """The numbers the chapter quotes: distances of the hover equilibrium (forward C.G.,
+        first non-zero and last advance ratio, norm units), largest residuals (one digit),
+        harmonics at the last advance ratio (deg), how many motions were found."""
+        f, n = self.cases.index("forward"), self.cases.index("neutral")
+        fw, h = self.distance[f], self.harmonics_deg[f, -1]
+        return {
+            "ch7_dist_025": round(float(fw[1]), 1),
+            "ch7_dist_25": round(float(fw[-1]), 1),
+            "ch7_res_fw": float("%.1g" % np.nanmax(self.residual[f])),
+            "ch7_res_all": float("%.1g" % np.nanmax(self.residual)),
+            "ch7_b1s_25": round(float(h[0, 2]), 1),
+            "ch7_b1c_25": round(float(h[0, 1]), 1),
+            "ch7_beta0_25": round(float(h[0, 0]), 1),
+            "ch7_th1s_25": round(float(h[2, 2]), 1),
+            "ch7_n_mu": int(self.mu_values.size),
+            "ch7_found_fn": int(self.found[[f, n]].sum()),
+            "ch7_miss_bwd": _mu_list(self.missing()["backward"]),
+        }
+
 
 def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_table: int = 4096,
                    n_plot: int = 73) -> SteadyMotions:
@@ -136,14 +252,13 @@ def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_
     at the root, stall), so the Fourier series converges slowly and between the collocation
     points the residual ``|h(psi, xi) - xi'|`` of 64 points is up to about 1e-2 in the
     scaled norm at ``mu = 0.25``, ten times less with 256. The motion is then tabulated
-    (:func:`rotorlyap.analysis.floquet.tabulate_motion`, ``n_table`` azimuths) for fast
+    (:func:`rotorlyap.model.steady.tabulate_motion`, ``n_table`` azimuths) for fast
     evaluation. :attr:`SteadyMotions.residual` is the largest scaled residual on 4001
     azimuths: the size of ``f(psi, 0)``, the part of ``W'`` linear in ``x``.
     """
     mu_values = np.asarray(mu_values, dtype=float)
     k, m = len(cases), mu_values.size
     psi = np.linspace(0.0, 2 * np.pi, n_plot)
-    grid = 2 * np.pi * np.arange(256) / 256
     fine = np.linspace(0.0, 2 * np.pi, 4001)
     found = np.zeros((k, m), dtype=bool)
     dist = np.full((k, m), np.nan)
@@ -169,7 +284,7 @@ def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_
             tab = tabulate_motion(pm, n_table)
             motions[(case, round(float(mu), 6))] = tab
             found[i, j] = True
-            dist[i, j] = float(scaled_norm(tab.xi(grid) - xh, DEFAULT_SCALES).max())
+            dist[i, j] = max_distance(tab, xh)
             harm[i, j] = pm.harmonics_deg
             blade = Blade(p, float(mu))
             res[i, j] = float(scaled_norm(blade.rhs(fine, tab.xi(fine)) - tab.dxi(fine), DEFAULT_SCALES).max())
@@ -214,6 +329,127 @@ def plot_steady_motions(data: SteadyMotions, axes, case_index: int = 0) -> None:
     ax.legend(fontsize=7)
 
 
+def figure_steady_motions(data: SteadyMotions, case_index: int = 0) -> Figure:
+    """The figure of :func:`plot_steady_motions` (four panels, 15 x 3.6 in), laid out and
+    closed in pyplot.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig, axes = subplots(1, 4, figsize=(15, 3.6))
+    plot_steady_motions(data, axes, case_index)
+    return finish(fig)
+
+
+@dataclass(frozen=True)
+class InflowData:
+    """Distance of the hover equilibrium from the periodic motion at small advance ratios,
+    for several inflow models.
+
+    Attributes
+    ----------
+    case : str
+        Table I case.
+    models : tuple of str
+        Inflow models (``BladeParameters.inflow_model``), (k,).
+    mu_values : numpy.ndarray
+        Advance ratios, (m,).
+    distance : numpy.ndarray
+        :func:`max_distance` of the hover equilibrium from the periodic motion (64 collocation
+        points), norm units, (k, m).
+    """
+
+    case: str
+    models: tuple
+    mu_values: np.ndarray
+    distance: np.ndarray
+
+    def summary(self) -> str:
+        """One line per model: the distances, two decimals."""
+        mus = _mu_list(self.mu_values)
+        return "\n".join(_join(f"inflow {model:8s}: distance of the hover equilibrium at mu = {mus}:",
+                               np.round(self.distance[i], 2)) for i, model in enumerate(self.models))
+
+    def facts(self) -> dict:
+        """``ch7_dist_<model>_<digits of the first mu>``: the distance at the first advance
+        ratio, two decimals."""
+        tag = f"{float(self.mu_values[0]):g}".split(".")[-1]
+        return {f"ch7_dist_{model}_{tag}": round(float(self.distance[i, 0]), 2)
+                for i, model in enumerate(self.models)}
+
+
+def inflow_data(case: str = "forward", models: tuple = ("glauert", "drees"),
+                mu_values: tuple = (0.0125, 0.025)) -> InflowData:
+    """:func:`max_distance` of the hover equilibrium from the periodic motion
+    (:func:`rotorlyap.model.steady.periodic_motion`, default collocation) for each inflow
+    model at each advance ratio of ``mu_values``."""
+    dist = np.zeros((len(models), len(mu_values)))
+    for i, model in enumerate(models):
+        p = BladeParameters.table_i(case, inflow_model=model)
+        xh = Blade(p, 0.0).equilibrium()
+        dist[i] = [max_distance(periodic_motion(p, float(mu)), xh) for mu in mu_values]
+    return InflowData(case=case, models=tuple(models), mu_values=np.asarray(mu_values, dtype=float), distance=dist)
+
+
+@dataclass(frozen=True)
+class FoldData:
+    """Where the branch of periodic motions through the hover equilibrium ends.
+
+    Attributes
+    ----------
+    case : str
+        Table I case.
+    mu : float
+        Advance ratio at which the periodic motion is still found.
+    mean_lag_deg : float
+        Its mean lag angle, deg.
+    largest_real_multiplier : float
+        Its largest real Floquet multiplier (above 1: statically unstable).
+    fail_mu : float
+        A larger advance ratio at which none is found.
+    fail_message : str
+        Why (:attr:`rotorlyap.analysis.floquet.BladeFloquetPoint.message`).
+    hover_lag_deg : float
+        Lag angle of the hover equilibrium, deg.
+    """
+
+    case: str
+    mu: float
+    mean_lag_deg: float
+    largest_real_multiplier: float
+    fail_mu: float
+    fail_message: str
+    hover_lag_deg: float
+
+    def summary(self) -> str:
+        """Three lines: the motion found, why none is found beyond, the hover lag."""
+        return "\n".join([
+            f"{self.case} C.G., mu = {self.mu:g}: mean lag {self.mean_lag_deg:.2f} deg, largest real "
+            f"multiplier {self.largest_real_multiplier:.4f}",
+            _join(f"{self.case} C.G., mu = {self.fail_mu:g}:", self.fail_message),
+            "hover equilibrium: mean lag %.2f deg" % self.hover_lag_deg,
+        ])
+
+    def facts(self) -> dict:
+        """The largest real multiplier, three decimals."""
+        return {"ch7_fold_0": round(float(self.largest_real_multiplier), 3)}
+
+
+def fold_data(motions: SteadyMotions, case: str = "backward", mu: float = 0.005, fail_mu: float = 0.01) -> FoldData:
+    """The periodic motion of ``case`` at a small advance ratio ``mu`` with its Floquet
+    multipliers (:func:`rotorlyap.analysis.floquet.blade_floquet`), and the failure at
+    ``fail_mu``; the hover lag is read from ``motions``."""
+    p = BladeParameters.table_i(case)
+    pm = periodic_motion(p, mu)
+    m = blade_floquet(p, mu, steady=pm).multipliers
+    fold = float(m[np.abs(m.imag) < 1e-9].real.max())
+    return FoldData(case=case, mu=float(mu), mean_lag_deg=float(pm.harmonics_deg[1, 0]),
+                    largest_real_multiplier=fold, fail_mu=float(fail_mu),
+                    fail_message=blade_floquet(p, fail_mu).message,
+                    hover_lag_deg=float(motions.hover_deg[motions.cases.index(case), 1]))
+
+
 # --------------------------------------------------------------------------------------
 # 2. Floquet
 # --------------------------------------------------------------------------------------
@@ -238,6 +474,73 @@ class FloquetData:
                         (f"{case}_{tag}_frequency", sw.frequency),
                         (f"{case}_{tag}_spectral_radius", sw.spectral_radius)]
         return out
+
+    def sweep(self, case: str, steady: str = "periodic"):
+        """The :class:`~rotorlyap.analysis.floquet.FloquetSweep` of ``case`` about the
+        ``"periodic"`` motion or the ``"hover"`` equilibrium."""
+        i = self.cases.index(case)
+        return (self.periodic if steady == "periodic" else self.hover)[i]
+
+    def unstable_backward(self) -> np.ndarray:
+        """Indices of the advance ratios at which the backward C.G. is unstable about its
+        periodic motion."""
+        return np.flatnonzero(self.sweep("backward").max_growth_rate > 0)
+
+    def summary(self) -> str:
+        """Largest growth rates (1/rev, three decimals) of every case about both steady
+        states; every track of the forward C.G. (growth rate and frequency, 1/rev); where the
+        backward C.G. is unstable and its largest multiplier there."""
+        lines = []
+        for sp, sh in zip(self.periodic, self.hover):
+            lines.append(_join(f"{sp.case} C.G., largest growth rate (1/rev), about the periodic motion:",
+                               np.round(sp.max_growth_rate, 3)))
+            lines.append(_join(f"{'':{len(sp.case)}s}                                 about the hover equilibrium:",
+                               np.round(sh.max_growth_rate, 3)))
+        fp = self.sweep("forward")
+        lines.append(_join("forward C.G. tracks:", fp.names))
+        for name in fp.names:
+            t = fp.track(name)
+            lines.append(_join(f"  {name:6s} growth rate", np.round(fp.growth_rate[:, t], 3), " frequency",
+                               np.round(np.abs(fp.frequency[:, t]), 3)))
+        sb, j_un = self.sweep("backward"), self.unstable_backward()
+        lines.append(_join("backward C.G., unstable about the periodic motion at mu =", sb.mu[j_un]))
+        for j in j_un:
+            mj = sb.multipliers[j]
+            lines.append(f"  mu = {sb.mu[j]:g}: largest multiplier {np.round(mj[np.argmax(np.abs(mj))], 3)}")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Growth rates (1/rev, three decimals; four for the barely stable backward hover) and
+        frequencies (1/rev, two or three decimals) the chapter quotes, all about the periodic
+        motion unless named ``_hov``; the first advance ratio at which the backward C.G. is
+        unstable and its multiplier there."""
+        fp, sn, sb = self.sweep("forward"), self.sweep("neutral"), self.sweep("backward")
+        pt, ft, lt = fp.track("pitch+"), fp.track("flap+"), fp.track("lag+")
+        j_un = self.unstable_backward()
+        j1 = int(j_un[0])
+        m1 = sb.multipliers[j1][np.argmax(np.abs(sb.multipliers[j1]))]
+        return {
+            "ch7_pitch_sig0": round(float(fp.growth_rate[0, pt]), 3),
+            "ch7_pitch_sig25": round(float(fp.growth_rate[-1, pt]), 3),
+            "ch7_pitch_om0": round(float(fp.frequency[0, pt]), 2),
+            "ch7_pitch_om25": round(float(fp.frequency[-1, pt]), 2),
+            "ch7_flap_om0": round(float(fp.frequency[0, ft]), 2),
+            "ch7_flap_om25": round(float(abs(fp.frequency[-1, ft])), 2),
+            "ch7_flap_sig25": round(float(fp.growth_rate[-1, ft]), 3),
+            "ch7_fw_maxsig": round(float(np.nanmax(fp.max_growth_rate)), 3),
+            "ch7_fw_maxsig_hov": round(float(np.nanmax(self.sweep("forward", "hover").max_growth_rate)), 3),
+            "ch7_lag_om0": round(float(abs(fp.frequency[0, lt])), 3),
+            "ch7_lag_om25": round(float(abs(fp.frequency[-1, lt])), 2),
+            "ch7_lag_sig25": round(float(fp.growth_rate[-1, lt]), 3),
+            "ch7_neu_sig_min": round(float(np.nanmin(sn.max_growth_rate)), 3),
+            "ch7_neu_sig_max": round(float(np.nanmax(sn.max_growth_rate)), 3),
+            "ch7_flip_mu": float(sb.mu[j1]),
+            "ch7_flip_m": round(float(m1.real), 3),
+            "ch7_n_unstable_bwd": int(j_un.size),
+            "ch7_bwd_sig_max": round(float(np.nanmax(sb.max_growth_rate)), 3),
+            "ch7_bwd_sig0": round(float(sb.max_growth_rate[0]), 4),
+            "ch7_bwd_sig_last": round(float(sb.max_growth_rate[-1]), 3),
+        }
 
 
 def floquet_data(motions: SteadyMotions, *, n_steps: int = 1024) -> FloquetData:
@@ -286,6 +589,176 @@ def plot_floquet(data: FloquetData, axes) -> None:
         axes[1, c].set_yticklabels(["0", "0.25", "0.5", "1", "2", "3", "4", "5"])
         axes[1, c].set_xlabel(r"advance ratio $\mu$")
         axes[0, c].legend(fontsize=6, ncol=2, loc="lower left")
+
+
+def figure_floquet(data: FloquetData) -> Figure:
+    """The figure of :func:`plot_floquet` (two rows, one column per case, 14 x 7 in), laid
+    out and closed in pyplot.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig, axes = subplots(2, len(data.cases), figsize=(14, 7.0), sharex=True, squeeze=False)
+    plot_floquet(data, axes)
+    return finish(fig)
+
+
+# --------------------------------------------------------------------------------------
+# The quadratic Liapunov functions
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class QuadraticData:
+    """The quadratic Liapunov functions of the chapter and their diagnostics.
+
+    Attributes
+    ----------
+    case : str
+        The Table I case of the main functions (``"forward"``).
+    mu : float
+        Advance ratio of the forward-flight function about the hover equilibrium.
+    summaries : tuple of str
+        ``summary()`` of the function with ``Q = I`` and of the optimised one, in hover.
+    condition_number, lambda0_ratio, lambda0_ratio_optimised : float
+        Of the hover functions (``lambda0_ratio``: the largest start region relative to the
+        bound, ``1 / sqrt(condition_number)``).
+    weights : numpy.ndarray
+        Optimised weights ``w_i`` (``Q = diag(w_i / a_i**2)``), dimensionless, (6,).
+    other_cases : tuple of str
+        The other Table I cases, (k,).
+    other_summaries : tuple of str
+        ``summary()`` of their hover function with ``Q = I``, (k,).
+    other_lambda0_ratio, other_condition_number, other_growth_rate : numpy.ndarray
+        Their diagnostics, (k,); growth rate of the least damped mode, 1/rev.
+    flutter_message : str
+        Why no quadratic function exists for the backward C.G. without aerodynamic pitch
+        damping (the ``ValueError`` text); empty if one exists.
+    psi : numpy.ndarray
+        Azimuths of the test of the term linear in ``x``, rad, (n,).
+    eps : numpy.ndarray
+        Sizes of the disturbance ``eps d`` (``d``: one unit of flap rate), (e,).
+    dW_ratio : numpy.ndarray
+        ``W'(psi, eps d) / eps`` of the function about the hover equilibrium at ``mu``,
+        per rad, (e, n).
+    linear_term : numpy.ndarray
+        Its first-order prediction ``2 d^T P f(psi, 0)``, per rad, (n,).
+    functions : dict
+        The objects themselves (not compared): ``"identity"``, ``"optimised"`` (hover),
+        ``"hover_equilibrium"`` (at ``mu`` about the hover equilibrium), the blades
+        ``"blade_hover"``, ``"blade_mu"`` and the ``"equilibrium"`` state.
+    """
+
+    case: str
+    mu: float
+    summaries: tuple
+    condition_number: float
+    lambda0_ratio: float
+    lambda0_ratio_optimised: float
+    weights: np.ndarray
+    other_cases: tuple
+    other_summaries: tuple
+    other_lambda0_ratio: np.ndarray
+    other_condition_number: np.ndarray
+    other_growth_rate: np.ndarray
+    flutter_message: str
+    psi: np.ndarray
+    eps: np.ndarray
+    dW_ratio: np.ndarray
+    linear_term: np.ndarray
+    functions: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def summary(self) -> str:
+        """The functions' diagnostics, the optimised weights, the flutter case, and ``W'``
+        along a small flap-rate disturbance about the hover equilibrium at ``mu`` against
+        its first-order term (one decimal)."""
+        lines = list(self.summaries)
+        lines.append(_join("optimised weights w_i (Q = diag(w_i / a_i^2)), flap, lag, pitch, rates:",
+                           np.round(self.weights, 3)))
+        lines += [_join(f"{case} C.G.:", text) for case, text in zip(self.other_cases, self.other_summaries)]
+        if self.flutter_message:
+            lines.append(f"backward C.G., cm_pitch_rate = 0: ValueError: {self.flutter_message[:150]} ...")
+        else:
+            lines.append("backward C.G., cm_pitch_rate = 0: a quadratic function exists")
+        lines.append(f"quadratic about the hover equilibrium at mu = {self.mu:g}, along +flap rate:")
+        for eps, ratio in zip(self.eps, self.dW_ratio):
+            lines.append(_join(f"  W'(psi, eps d) / eps, eps = 1e{int(round(np.log10(eps)))}:", np.round(ratio, 1)))
+        lines.append(_join("  2 d^T P f(psi, 0):               ", np.round(self.linear_term, 1)))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Start-region ratios (three decimals), condition numbers, the backward C.G.'s growth
+        rate (1/rev, four decimals), two optimised weights and the largest linear term."""
+        i_n, i_b = self.other_cases.index("neutral"), self.other_cases.index("backward")
+        return {
+            "ch7_q_ratio_neu": round(float(self.other_lambda0_ratio[i_n]), 3),
+            "ch7_q_ratio_bwd": round(float(self.other_lambda0_ratio[i_b]), 3),
+            "ch7_q_kappa_bwd": round(float(self.other_condition_number[i_b]), 0),
+            "ch7_q_growth_bwd": round(float(self.other_growth_rate[i_b]), 4),
+            "ch7_q_kappa": round(float(self.condition_number), 1),
+            "ch7_q_ratio": round(float(self.lambda0_ratio), 3),
+            "ch7_qo_ratio": round(float(self.lambda0_ratio_optimised), 3),
+            "ch7_w_pitch": round(float(self.weights[2]), 3),
+            "ch7_w_flaprate": round(float(self.weights[3]), 1),
+            "ch7_lin_max": round(float(np.abs(self.linear_term).max()), 0),
+        }
+
+    def origin_functions(self, motions: SteadyMotions) -> dict:
+        """The six functions of :func:`origin_data`, in the order its ``facts()`` reads them:
+        the energy and the two quadratic functions in hover, then at ``mu`` the energy about
+        the periodic motion of ``motions``, the quadratic function with ``Q = I`` about the
+        hover equilibrium and about the periodic motion."""
+        fn = self.functions
+        b0, bmu, xh = fn["blade_hover"], fn["blade_mu"], fn["equilibrium"]
+        tab = motions.motions[(self.case, round(float(self.mu), 6))]
+        mu = f"{self.mu:g}"
+        return {
+            "energy, hover": (energy_function(b0, xh), True),
+            "quadratic Q = I, hover": (fn["identity"], True),
+            "quadratic, optimised Q, hover": (fn["optimised"], True),
+            f"energy, mu = {mu}, periodic motion": (energy_function(bmu, tab), False),
+            f"quadratic Q = I, mu = {mu}, hover equilibrium": (fn["hover_equilibrium"], False),
+            f"quadratic Q = I, mu = {mu}, periodic motion": (quadratic_function(bmu, tab), False),
+        }
+
+
+def quadratic_data(case: str = "forward", mu: float = 0.15, *, other_cases: tuple = ("neutral", "backward"),
+                   n_psi: int = 12, eps: tuple = (1e-2, 1e-4)) -> QuadraticData:
+    """The quadratic functions of ``case`` in hover (``Q = I`` and optimised,
+    :func:`rotorlyap.analysis.functions.optimised_quadratic_function`), of ``other_cases``
+    in hover, the attempt for the backward C.G. without aerodynamic pitch damping, and the
+    function at ``mu`` about the hover equilibrium (the paper's steady motion), whose ``W'``
+    is tested along ``eps`` times one unit of flap rate at ``n_psi`` azimuths."""
+    p = BladeParameters.table_i(case)
+    b0 = Blade(p, 0.0)
+    xh = b0.equilibrium()
+    q_id = quadratic_function(b0)
+    q_opt = optimised_quadratic_function(b0)
+    others = [quadratic_function(Blade(BladeParameters.table_i(c), 0.0)) for c in other_cases]
+    try:
+        quadratic_function(Blade(BladeParameters.table_i("backward", cm_pitch_rate=0.0), 0.0))
+        flutter = ""
+    except ValueError as exc:
+        flutter = str(exc)
+    bmu = Blade(p, mu)
+    q_hov = quadratic_function(bmu, xh)
+    psi = np.radians(np.arange(0, 360, 360 // n_psi))
+    d = np.array([0, 0, 0, 1.0, 0, 0]) * DEFAULT_SCALES  # a flap-rate disturbance
+    dd = np.broadcast_to(d, (psi.size, 6))
+    lin = 2 * np.einsum("mi,mij,mj->m", dd, q_hov.P(psi), q_hov.f(psi, np.zeros((psi.size, 6))))
+    ratios = np.array([q_hov.dW(psi, e * dd) / e for e in eps])
+    return QuadraticData(
+        case=case, mu=float(mu), summaries=(q_id.summary(), q_opt.summary()),
+        condition_number=q_id.condition_number, lambda0_ratio=q_id.lambda0_ratio,
+        lambda0_ratio_optimised=q_opt.lambda0_ratio, weights=np.diag(q_opt.Q) * DEFAULT_SCALES**2,
+        other_cases=tuple(other_cases), other_summaries=tuple(q.summary() for q in others),
+        other_lambda0_ratio=np.array([q.lambda0_ratio for q in others]),
+        other_condition_number=np.array([q.condition_number for q in others]),
+        other_growth_rate=np.array([q.growth_rate for q in others]),
+        flutter_message=flutter, psi=psi, eps=np.asarray(eps, dtype=float), dW_ratio=ratios, linear_term=lin,
+        functions={"identity": q_id, "optimised": q_opt, "hover_equilibrium": q_hov, "blade_hover": b0,
+                   "blade_mu": bmu, "equilibrium": xh})
 
 
 # --------------------------------------------------------------------------------------
@@ -384,6 +857,142 @@ class ScanData:
         return [("candidate", [self.keys[i] for i in idx[0]]), ("case", [self.cases[i] for i in idx[1]]),
                 ("mu", self.mu_values[idx[2]]), ("psi_deg", np.degrees(self.psi)[idx[3]]),
                 ("category", self.category.ravel()), ("lambda0", self.lambda0.ravel())]
+
+    def min_certified_lambda0(self, key: str, case: str) -> tuple:
+        """Smallest ``lambda0`` over the stable azimuths at each advance ratio (norm units),
+        NaN where no azimuth is stable."""
+        c, i = self.keys.index(key), self.cases.index(case)
+        return tuple(float(self.lambda0[c, i, j][self.stable[c, i, j]].min()) if self.stable[c, i, j].any()
+                     else float("nan") for j in range(self.mu_values.size))
+
+    def summary(self) -> str:
+        """Per candidate, case and advance ratio: ``stable/step-6-fails`` azimuth counts, or why
+        nothing is certified (``s3``, ``noQ``, ``noXi``); the optimised weights of the forward
+        C.G."""
+        lines = [_join("mu:", self.mu_values)]
+        why = {2: "s3", 3: "s3", 4: "noQ", 5: "noXi"}
+        for c in range(len(self.keys)):
+            lines.append(self.labels[c])
+            for i, case in enumerate(self.cases):
+                cells = []
+                for j in range(self.mu_values.size):
+                    counts = np.bincount(self.category[c, i, j], minlength=6)
+                    cells.append("/".join(str(int(v)) for v in counts[[0, 1]]) if counts[:2].sum()
+                                 else why[int(np.argmax(counts))])
+                lines.append(_join(f"   {case:9s}", "  ".join(f"{v:>6s}" for v in cells)))
+        lines.append(f"(stable/step-6-fails azimuths of {self.psi.size}; s3 = step 3 failed; "
+                     "noQ = no quadratic function; noXi = no periodic motion)")
+        lines.append(_join("optimised weights (forward C.G.):", np.round(self.weights[self.cases.index("forward")], 3)))
+        return "\n".join(lines)
+
+    def certificate_rows(self, case: str = "forward", keys: tuple = ("quadratic", "quadratic-opt")) -> list:
+        """Rows of the certificate table: function, mu, ``A1`` after step 3, smallest and
+        largest certified ``lambda0`` (three decimals), azimuths certified."""
+        i, rows = self.cases.index(case), []
+        for key in keys:
+            c = self.keys.index(key)
+            for j, mu in enumerate(self.mu_values):
+                lam, ok = self.lambda0[c, i, j], self.stable[c, i, j]
+                rows.append((self.labels[c], f"{mu:g}", f"{self.A_used[c, i, j]:.3f}",
+                             f"{lam[ok].min():.3f}" if ok.any() else "-", f"{lam[ok].max():.3f}" if ok.any() else "-",
+                             f"{int(ok.sum())} of {ok.size}"))
+        return rows
+
+    def certificate_table(self, case: str = "forward") -> str:
+        """:meth:`certificate_rows` as a Markdown table."""
+        return markdown_table((f"function ({case} C.G., strict, about the periodic motion)", "mu", "A1 after step 3",
+                               "min lambda0", "max lambda0", "azimuths certified"), self.certificate_rows(case))
+
+    def _backward_mu(self) -> tuple:
+        """Advance ratios of the backward C.G. with ``Q = I``: every azimuth certified, some,
+        step 3 failed; and of the neutral C.G., optimised: step 3 failed."""
+        cq, co = self.keys.index("quadratic"), self.keys.index("quadratic-opt")
+        ib, ineu = self.cases.index("backward"), self.cases.index("neutral")
+        ok = self.stable[cq, ib].all(axis=1)
+        part = self.stable[cq, ib].any(axis=1) & ~ok
+        s3 = np.isnan(self.A_used[cq, ib]) | (self.A_used[cq, ib] == 0)
+        s3 &= ~np.isin(self.category[cq, ib, :, 0], (4, 5))
+        s3_neu = self.A_used[co, ineu] == 0
+        return self.mu_values[ok], self.mu_values[part], self.mu_values[s3], self.mu_values[s3_neu]
+
+    def _energy_sides(self) -> tuple:
+        """For the energy, practical, about the periodic motion (forward C.G.): the advance
+        ratios where no azimuth is stable, and the share of azimuths with ``W' > 0`` on the
+        sphere over the rear (270 to 90 deg) and the front half of the disc, per advance ratio."""
+        cp, fwd = self.keys.index("energy-practical"), self.cases.index("forward")
+        deg = np.degrees(self.psi)
+        dark = self.category[cp, fwd] == 3
+        tail = (deg < 90) | (deg >= 270)
+        return ~self.stable[cp, fwd].any(axis=1), dark, tail
+
+    def certificate_summary(self) -> str:
+        """The certificate table's rows, where the energy's practical reading fails over the
+        disc, the certified cells of the neutral and backward C.G., and the advance ratios
+        where step 3 fails."""
+        lines = [" | ".join(r[1:]) for r in self.certificate_rows()]
+        fail, dark, tail = self._energy_sides()
+        label = self.labels[self.keys.index("energy-practical")]
+        for j, mu in enumerate(self.mu_values):
+            if j and fail[j]:
+                lines.append(f"{label}, mu = {mu:g}: W' > 0 on the sphere at "
+                             f"{dark[j, tail].mean():.2f} of the azimuths over the rear half (270 to 90 deg), "
+                             f"{dark[j, ~tail].mean():.2f} over the front half")
+        cq, co = self.keys.index("quadratic"), self.keys.index("quadratic-opt")
+        for case in ("neutral", "backward"):
+            i = self.cases.index(case)
+            lam_h = self.lambda0[cq, i, 0][self.stable[cq, i, 0]]
+            lines.append(f"{case} C.G.: certified cells, Q = I {int(self.stable[cq, i].sum())}, optimised "
+                         f"{int(self.stable[co, i].sum())} of {self.stable[cq, i].size}; hover lambda0 (Q = I) "
+                         f"{lam_h.min():.2g}")
+            lines.append(_join("   per mu (Q = I):", self.stable[cq, i].sum(axis=1)))
+        ok, part, s3, s3_neu = self._backward_mu()
+        lines.append(_join("backward, Q = I: all azimuths at mu =", ok, "; some at", part, "; step 3 failed at", s3))
+        lines.append(_join("neutral, optimised: step 3 failed at mu =", s3_neu))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """The numbers the chapter quotes about the scans: certified start regions and bounds
+        of the forward C.G. (norm units, three and two decimals; deg of flap), counts of
+        certified cells, where the energy's practical reading fails and on which half of the
+        disc, the hover lambda0 of the other cases (two significant digits) and the advance
+        ratios where the backward and neutral C.G. are certified or step 3 fails."""
+        fwd = self.cases.index("forward")
+        cq, co = self.keys.index("quadratic"), self.keys.index("quadratic-opt")
+        ce, cp, cqh = self.keys.index("energy"), self.keys.index("energy-practical"), self.keys.index("quadratic-hover")
+        lam_q = self.min_certified_lambda0("quadratic", "forward")
+        lam_o = self.min_certified_lambda0("quadratic-opt", "forward")
+        fail, dark, tail = self._energy_sides()
+        out = {
+            "ch7_lam_q0": round(lam_q[0], 3),
+            "ch7_lam_q25": round(lam_q[-1], 3),
+            "ch7_lam_o0": round(lam_o[0], 3),
+            "ch7_lam_o_min": round(min(lam_o[1:]), 3),
+            "ch7_lam_o_max": round(max(lam_o[1:]), 3),
+            "ch7_A_q0": round(float(self.A_used[cq, fwd, 0]), 2),
+            "ch7_A_o0": round(float(self.A_used[co, fwd, 0]), 2),
+            "ch7_deg_o0": round(float(lam_o[0] * np.degrees(DEFAULT_SCALES[0])), 2),
+            "ch7_ncert_q": int(self.stable[cq, fwd].sum()),
+            "ch7_ncert_o": int(self.stable[co, fwd].sum()),
+            "ch7_ncells": int(self.stable[cq, fwd].size),
+            "ch7_energy_cert": int(self.stable[ce].sum()),
+            "ch7_energy_cells": int(self.stable[ce].size),
+            "ch7_ep_mu_last": float(self.mu_values[np.flatnonzero(self.stable[cp, fwd].all(axis=1))[-1]]),
+            "ch7_ep_mu_fail": float(self.mu_values[fail][0]),
+            "ch7_ep_rear": round(float(dark[fail][:, tail].mean()), 2),
+            "ch7_ep_front": round(float(dark[fail][:, ~tail].mean()), 2),
+            "ch7_qh_fw": int(self.stable[cqh, :, 1:].sum()),
+            "ch7_qh_hover": int(self.stable[cqh, :, 0].sum()),
+            "ch7_qh_hover_cells": int(self.stable[cqh, :, 0].size),
+        }
+        for case in ("neutral", "backward"):
+            i, tag = self.cases.index(case), _CASE_TAGS[case]
+            out[f"ch7_ncert_q_{tag}"] = int(self.stable[cq, i].sum())
+            out[f"ch7_ncert_o_{tag}"] = int(self.stable[co, i].sum())
+            out[f"ch7_lam_q0_{tag}"] = float("%.2g" % self.lambda0[cq, i, 0][self.stable[cq, i, 0]].min())
+        ok, part, s3, s3_neu = self._backward_mu()
+        out.update({"ch7_bwd_cert_mu": _mu_list(ok), "ch7_bwd_part_mu": _mu_list(part),
+                    "ch7_bwd_s3_mu": _mu_list(s3), "ch7_neu_opt_s3_mu": _mu_list(s3_neu)})
+        return out
 
 
 def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_values=MU_SCAN,
@@ -500,6 +1109,95 @@ def scan_legend_handles():
             for col, name in zip(_SCAN_COLORS, SCAN_CATEGORY_NAMES)]
 
 
+def figure_scan(data: ScanData) -> Figure:
+    """The figure of :func:`plot_scan` (one row per candidate, one column per case, 12 in
+    wide, 2 in per row) with the legend of the categories below, laid out and closed in
+    pyplot.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    nc = len(data.keys)
+    fig, axes = subplots(nc, len(data.cases), figsize=(12, 2.0 * nc + 1.2), sharex=True, sharey=True,
+                             squeeze=False)
+    plot_scan(data, axes)
+    fig.legend(handles=scan_legend_handles(), loc="lower center", ncol=3, fontsize=7)
+    return finish(fig, rect=(0, 0.04, 1, 1))
+
+
+@dataclass(frozen=True)
+class SearchCheck:
+    """Certificates of the scan recomputed with a finer sphere search.
+
+    Attributes
+    ----------
+    case : str
+        Table I case.
+    keys : tuple of str
+        Candidate of each check, (n,).
+    mu_values : numpy.ndarray
+        Advance ratio of each check, (n,).
+    n_sphere : int
+        Quasi-random directions per sphere of the finer search.
+    A : numpy.ndarray
+        Bound after step 3, scan and finer search, norm units, (n, 2).
+    min_lambda0 : numpy.ndarray
+        Smallest ``lambda0``, scan and finer search, norm units, (n, 2).
+    n_stable : numpy.ndarray
+        Stable azimuths, scan and finer search, (n, 2).
+    """
+
+    case: str
+    keys: tuple
+    mu_values: np.ndarray
+    n_sphere: int
+    A: np.ndarray
+    min_lambda0: np.ndarray
+    n_stable: np.ndarray
+
+    @property
+    def relative_change(self) -> np.ndarray:
+        """``|min lambda0 (finer) / min lambda0 (scan) - 1|``, (n,)."""
+        return np.abs(self.min_lambda0[:, 1] / self.min_lambda0[:, 0] - 1)
+
+    def summary(self) -> str:
+        """One line per check: ``A1``, smallest ``lambda0`` (four decimals) and stable azimuths,
+        scan -> finer search."""
+        return "\n".join(
+            f"{key:14s} mu = {mu:4.2f}: A1 {a[0]:.4f} -> {a[1]:.4f}, min lambda0 {lam[0]:.4f} -> "
+            f"{lam[1]:.4f}, azimuths {int(n[0])} -> {int(n[1])}"
+            for key, mu, a, lam, n in zip(self.keys, self.mu_values, self.A, self.min_lambda0, self.n_stable))
+
+    def facts(self) -> dict:
+        """The largest relative change of the smallest ``lambda0``, percent, one decimal."""
+        return {"ch7_conv": round(float(100 * max(self.relative_change)), 1)}
+
+
+def search_check(scan: ScanData, motions: SteadyMotions, *, case: str = "forward",
+                 checks: tuple = ((0.0, "quadratic"), (0.0, "quadratic-opt"), (0.25, "quadratic-opt")),
+                 n_sphere: int = 1024) -> SearchCheck:
+    """Rerun :func:`rotorlyap.analysis.stability.blade_stability` for the ``(mu, key)`` of
+    ``checks`` (quadratic candidates about the periodic motion) with ``n_sphere``
+    quasi-random directions per sphere, on the scan's azimuths, the optimised weights of the
+    scan."""
+    i = scan.cases.index(case)
+    p = BladeParameters.table_i(case)
+    A, lam, n = np.zeros((len(checks), 2)), np.zeros((len(checks), 2)), np.zeros((len(checks), 2), dtype=int)
+    for k, (mu, key) in enumerate(checks):
+        r0 = scan.result(key, case, mu)
+        Q = None if key == "quadratic" else np.diag(scan.weights[i] / DEFAULT_SCALES**2)
+        steady = None if mu == 0 else motions.steady(case, mu)
+        r1 = blade_stability(p, mu, lyapunov=lambda b, steady, Q=Q: quadratic_function(b, steady, Q),
+                             steady=steady, n_psi=scan.psi.size, n_sphere=n_sphere)
+        A[k] = r0.A, r1.A
+        lam[k] = r0.lambda0.min(), r1.lambda0.min()
+        n[k] = int(r0.stable.sum()), int(r1.stable.sum())
+    return SearchCheck(case=case, keys=tuple(key for _, key in checks),
+                       mu_values=np.array([mu for mu, _ in checks], dtype=float), n_sphere=int(n_sphere),
+                       A=A, min_lambda0=lam, n_stable=n)
+
+
 # --------------------------------------------------------------------------------------
 # 4. Validation
 # --------------------------------------------------------------------------------------
@@ -577,6 +1275,146 @@ def plot_validation(validations, axes, *, certified=("quadratic-opt", "quadratic
     axes[0].legend(fontsize=6, loc="upper left")
 
 
+#: Header of the confusion table (:meth:`ValidationData.confusion_table`).
+CONFUSION_HEADER = ("motions", "function", "reading", "covered, stayed within A", "covered, reached A",
+                    "not covered, stayed within A", "not covered, reached A", "covered, beyond the bound A1")
+
+
+@dataclass(frozen=True)
+class ValidationData:
+    """Every simulated motion of the chapter, with the verdicts it is tabulated against.
+
+    Attributes
+    ----------
+    forward : tuple of Validation
+        The forward C.G., one per advance ratio (drawn in :func:`figure_validation`).
+    hover : tuple of Validation
+        The hover of each of :attr:`hover_cases`.
+    hover_cases : tuple of str
+        The other Table I cases.
+    labels : dict
+        ``{candidate key: label}`` for the tables.
+    lambda0_hover : tuple of float
+        Smallest certified ``lambda0`` of the forward C.G. in hover with ``Q = I`` and with the
+        optimised weights (norm units), from the scan.
+    """
+
+    forward: tuple
+    hover: tuple
+    hover_cases: tuple
+    labels: dict
+    lambda0_hover: tuple
+
+    @property
+    def validations(self) -> tuple:
+        """All validations, forward C.G. first."""
+        return tuple(self.forward) + tuple(self.hover)
+
+    def rows(self) -> list:
+        """:func:`confusion_rows` of every validation."""
+        return confusion_rows(self.validations, self.labels)
+
+    def confusion_table(self) -> str:
+        """The confusion matrices as a Markdown table (:data:`CONFUSION_HEADER`)."""
+        return markdown_table(CONFUSION_HEADER, self.rows())
+
+    def export(self) -> list:
+        """Named columns of the forward-C.G. motions for :func:`rotorlyap.figures.export.figure_csv`."""
+        return ([(f"v{i}_" + k, getattr(v, k)) for i, v in enumerate(self.forward)
+                 for k in ("radius", "max_norm", "bounded", "psi_index")]
+                + [(f"v{i}_covered_" + n, v.covered[j]) for i, v in enumerate(self.forward)
+                   for j, n in enumerate(v.names)])
+
+    @staticmethod
+    def _strict(v) -> np.ndarray:
+        """Motions of ``v`` started inside at least one strict certificate."""
+        return np.any([v.covered[j] for j, r in enumerate(v.readings) if r == "strict"], axis=0)
+
+    @staticmethod
+    def _strict_violations(v) -> int:
+        return int(sum(v.violations(n) for n, r in zip(v.names, v.readings) if r == "strict"))
+
+    def counts(self) -> tuple:
+        """Motions simulated, started inside a strict certificate (each counted once), and
+        strictly certified motions that went beyond their bound ``A1``."""
+        vals = self.validations
+        return (sum(v.n for v in vals), sum(int(self._strict(v).sum()) for v in vals),
+                sum(self._strict_violations(v) for v in vals))
+
+    def growth_ratios(self) -> list:
+        """Largest ``max ||x|| / ||x0||`` of a bounded motion, per forward-C.G. validation."""
+        return [float((v.max_norm / v.radius)[v.bounded].max()) for v in self.forward]
+
+    def observed_bounded(self) -> float:
+        """Largest start norm up to which every start of the first forward-C.G. validation
+        (hover) stayed within ``A`` (norm units)."""
+        v = self.forward[0]
+        bnd = {r: bool(v.bounded[v.radius == r].all()) for r in np.unique(v.radius)}
+        return float(max(r for r, ok in bnd.items() if ok and all(bnd[s] for s in bnd if s <= r)))
+
+    def summary(self) -> str:
+        """The confusion rows, the counts, the largest growth of a bounded motion (two decimals)."""
+        n_motions, n_cert, viol = self.counts()
+        lines = [_join(f"{r[0]:24s} {r[1][:44]:44s} {r[2]:9s}", r[3:]) for r in self.rows()]
+        lines.append(_join("motions:", n_motions, "; certified (strict):", n_cert, "; certified but beyond A1:", viol))
+        lines.append(_join("largest max-norm / start-norm of a bounded motion (forward C.G.):",
+                           np.round(self.growth_ratios(), 2)))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Counts, the observed bounded region of the forward hover and its ratio to the
+        certified ``lambda0`` (one decimal), the largest growth (two decimals), and for each
+        other hover the certified starts, their violations and the paper's reading's starts
+        that reached ``A``."""
+        n_motions, n_cert, viol = self.counts()
+        obs = self.observed_bounded()
+        out = {
+            "ch7_n_motions": int(n_motions),
+            "ch7_n_cert": n_cert,
+            "ch7_strict_viol": int(viol),
+            "ch7_obs_all_bounded": round(obs, 3),
+            "ch7_obs_ratio_q": round(obs / self.lambda0_hover[0], 1),
+            "ch7_obs_ratio_o": round(obs / self.lambda0_hover[1], 1),
+            "ch7_growth_ratio": round(max(self.growth_ratios()), 2),
+        }
+        for case, v in zip(self.hover_cases, self.hover):
+            tag = _CASE_TAGS[case]
+            out[f"ch7_hov_cert_{tag}"] = int(self._strict(v).sum())
+            out[f"ch7_hov_viol_{tag}"] = self._strict_violations(v)
+            out[f"ch7_hov_paper_left_{tag}"] = int(v.confusion("paper")[0, 1])
+        return out
+
+
+def validation_set(scan: ScanData, motions: SteadyMotions, *, forward_mu: tuple = (0.0, 0.15, 0.25),
+                   hover_cases: tuple = ("neutral", "backward"),
+                   hover_keys: tuple = ("paper", "energy", "quadratic", "quadratic-opt"),
+                   n_directions: int = 16, n_periods: float = 10) -> ValidationData:
+    """:func:`validation_data` of the forward C.G. at ``forward_mu`` (the candidates about the
+    periodic motion) and of the hover of ``hover_cases`` (``hover_keys``, the paper's reading
+    included)."""
+    fwd = validation_data(scan, motions, "forward", forward_mu, n_directions=n_directions, n_periods=n_periods)
+    hov = ()
+    for case in hover_cases:
+        hov += validation_data(scan, motions, case, (0.0,), keys=hover_keys, n_directions=n_directions,
+                               n_periods=n_periods)
+    lam = tuple(scan.min_certified_lambda0(key, "forward")[0] for key in ("quadratic", "quadratic-opt"))
+    return ValidationData(forward=fwd, hover=hov, hover_cases=tuple(hover_cases),
+                          labels=dict(zip(scan.keys, scan.labels)), lambda0_hover=lam)
+
+
+def figure_validation(data: ValidationData) -> Figure:
+    """The figure of :func:`plot_validation` for the forward-C.G. validations (one panel
+    each, 14 x 4.3 in), laid out and closed in pyplot.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig, axes = subplots(1, len(data.forward), figsize=(14, 4.3), sharey=True, squeeze=False)
+    plot_validation(data.forward, axes[0])
+    return finish(fig)
+
+
 # --------------------------------------------------------------------------------------
 # 5. What the motion does
 # --------------------------------------------------------------------------------------
@@ -604,6 +1442,10 @@ class MotionData:
     check : tuple of float
         Last-revolution peak norm of the first motion of each experiment recomputed for two
         revolutions from its final state with ten times tighter tolerances, relative change.
+    parameters : tuple of BladeParameters
+        The blade of each experiment (not compared).
+    mu_values : tuple of float
+        The advance ratio of each experiment.
     """
 
     histories: tuple
@@ -612,12 +1454,45 @@ class MotionData:
     offsets: tuple
     reference: tuple
     check: tuple
+    parameters: tuple = field(default=(), compare=False, repr=False)
+    mu_values: tuple = ()
 
     def export(self) -> list:
+        """Per experiment: the peak norm of each revolution and the revolution index."""
         out = []
         for i, h in enumerate(self.histories):
             out += [(f"e{i}_peaks", h.peaks), (f"e{i}_rev", np.arange(h.peaks.shape[0]))]
         return out
+
+    @property
+    def check_bound(self) -> float:
+        """The power of ten above the largest :attr:`check`
+        (:func:`rotorlyap.reporting.decade_above`): an error estimate, known to its order of
+        magnitude."""
+        return decade_above(max(self.check))
+
+    def summary(self) -> str:
+        """Per experiment: the verdicts, the last peak norms (one decimal), the pitch and lag
+        range over the last revolution of the first motion (deg); the tolerance check as a
+        bound."""
+        lines = []
+        for h, off in zip(self.histories, self.offsets):
+            k = points_per_revolution(h) + 1
+            th = np.degrees(off[-k:, 2] + h.x[-k:, 0, 2])
+            ze = np.degrees(off[-k:, 1] + h.x[-k:, 0, 1])
+            lines.append(f"{h.label}: {h.verdict}; peak norm in the last revolution {np.round(h.peaks[-1], 1)}; "
+                         f"pitch {th.min():.1f} to {th.max():.1f} deg, lag {ze.min():.1f} to {ze.max():.1f} deg")
+        lines.append(f"relative change of the last peak with ten times tighter tolerances: < {self.check_bound:.0e} "
+                     "for every motion")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """The tolerance bound, and for the last experiment (forward flight about the hover
+        equilibrium) the largest distance of the periodic motion and the last peak of the
+        first motion (norm units, two decimals)."""
+        return {"ch7_lc_check": self.check_bound,
+                "ch7_ff_ref_max": round(float(self.reference[-1].max()), 2),
+                "ch7_ff_peak": round(float(self.histories[-1].peaks[-1, 0]), 2)}
 
 
 def points_per_revolution(h) -> int:
@@ -672,7 +1547,8 @@ def motion_data(*, flutter_periods: int = 15, drift_mu: float = 0.05, drift_peri
     p = experiments[-1][0]
     refs[-1] = scaled_norm(periodic_motion(p, forward_mu).xi(hist[-1].psi) - offs[-1][0], a)
     return MotionData(histories=tuple(hist), labels=tuple(labels), start_labels=(starts,) * 3,
-                      offsets=tuple(offs), reference=tuple(refs), check=tuple(checks))
+                      offsets=tuple(offs), reference=tuple(refs), check=tuple(checks),
+                      parameters=tuple(e[0] for e in experiments), mu_values=tuple(float(e[1]) for e in experiments))
 
 
 def plot_motions(data: MotionData, axes) -> None:
@@ -715,6 +1591,173 @@ def plot_motions(data: MotionData, axes) -> None:
     ax.legend(fontsize=6)
 
 
+def figure_motions(data: MotionData) -> Figure:
+    """The figure of :func:`plot_motions` (three panels, 15 x 4.3 in), laid out and closed in
+    pyplot.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig, axes = subplots(1, 3, figsize=(15, 4.3))
+    plot_motions(data, axes)
+    return finish(fig)
+
+
+@dataclass(frozen=True)
+class FlutterCycle:
+    """The limit cycle of a fluttering blade, from the first motion of a long simulation.
+
+    Attributes
+    ----------
+    label : str
+        The experiment.
+    peak : float
+        Peak norm in the last revolution, norm units.
+    theta_min_deg, theta_max_deg : float
+        Pitch range over the last revolution, deg.
+    theta_eq_deg : float
+        Pitch angle of the equilibrium, deg.
+    alpha_max_deg : float
+        Largest angle of attack over the last revolution, deg.
+    oscillations_per_rev : float
+        Pitch oscillations per revolution over the last five (zero crossings / 2).
+    linear_frequency : float
+        Frequency of the unstable linear (flutter) mode, 1/rev.
+    settle_revolution : int
+        First revolution whose peak is within 2 % of the last.
+    stall_deg : float
+        Stall angle of the section, deg.
+    """
+
+    label: str
+    peak: float
+    theta_min_deg: float
+    theta_max_deg: float
+    theta_eq_deg: float
+    alpha_max_deg: float
+    oscillations_per_rev: float
+    linear_frequency: float
+    settle_revolution: int
+    stall_deg: float
+
+    def summary(self) -> str:
+        """One line: angle of attack (deg), oscillations per revolution, linear frequency,
+        when it settled."""
+        return (f"flutter limit cycle: largest angle of attack {self.alpha_max_deg:.1f} deg, "
+                f"{self.oscillations_per_rev:.1f} pitch oscillations per revolution (linear flutter mode: "
+                f"{self.linear_frequency:.2f} per rev), peaks within 2 % of the final from revolution "
+                f"{self.settle_revolution}")
+
+    def facts(self) -> dict:
+        """Peak (one decimal), pitch range and angle of attack (whole deg), equilibrium pitch and
+        stall angle (deg, one decimal), frequencies, the revolution it settled."""
+        return {
+            "ch7_lc_peak": round(float(self.peak), 1),
+            "ch7_lc_thmin": int(round(float(self.theta_min_deg))),
+            "ch7_lc_thmax": int(round(float(self.theta_max_deg))),
+            "ch7_lc_th0": round(float(self.theta_eq_deg), 1),
+            "ch7_lc_alpha": int(round(float(self.alpha_max_deg))),
+            "ch7_lc_freq": round(float(self.oscillations_per_rev), 1),
+            "ch7_lin_freq": round(float(self.linear_frequency), 2),
+            "ch7_lc_settle": int(self.settle_revolution),
+            "ch7_stall": round(float(self.stall_deg), 1),
+        }
+
+
+def flutter_cycle(data: MotionData, index: int = 0) -> FlutterCycle:
+    """Analyse the first motion of experiment ``index`` of ``data`` (the backward C.G. in
+    hover without aerodynamic pitch damping): its last revolution, its last five, and the
+    linear flutter mode of the blade (:func:`rotorlyap.model.modes.derived_quantities`)."""
+    h, off, p = data.histories[index], data.offsets[index], data.parameters[index]
+    k = points_per_revolution(h) + 1
+    last = slice(-k, None)
+    th = np.degrees(off[last, 2] + h.x[last, 0, 2])
+    alpha = np.degrees(Blade(p, data.mu_values[index]).angle_of_attack(h.psi[last], off[last] + h.x[last, 0]))
+    five = slice(-5 * (k - 1) - 1, None)
+    theta = h.x[five, 0, 2] - h.x[five, 0, 2].mean()
+    freq = np.sum(np.signbit(theta[1:]) != np.signbit(theta[:-1])) / 2 / 5
+    lin_freq = [m.frequency for m in derived_quantities(p).unstable_air_modes][0]
+    settle = int(np.flatnonzero(np.abs(h.peaks[:, 0] / h.peaks[-1, 0] - 1) < 0.02)[0]) + 1
+    return FlutterCycle(label=h.label, peak=float(h.peaks[-1, 0]), theta_min_deg=float(th.min()),
+                        theta_max_deg=float(th.max()), theta_eq_deg=float(np.degrees(off[0, 2])),
+                        alpha_max_deg=float(alpha.max()), oscillations_per_rev=float(freq),
+                        linear_frequency=float(lin_freq), settle_revolution=settle,
+                        stall_deg=float(np.degrees(p.airfoil.alpha_stall)))
+
+
+@dataclass(frozen=True)
+class FarMotion:
+    """The periodic motion a long simulation settled on, found by Newton's method from its
+    last revolution.
+
+    Attributes
+    ----------
+    label : str
+        The experiment.
+    residual : float
+        Collocation residual of the periodic motion.
+    mean_lag_deg : float
+        Its mean lag angle, deg.
+    hover_lag_deg : float
+        Lag angle of the hover equilibrium, deg.
+    spectral_radius : float
+        Of its Floquet multipliers.
+    distance_end : float
+        Largest distance of the simulated last revolution from it, norm units.
+    distance_hover : float
+        :func:`max_distance` of the hover equilibrium from it, norm units.
+    peak : float
+        Peak norm of the first motion in the last revolution, about the hover equilibrium.
+    """
+
+    label: str
+    residual: float
+    mean_lag_deg: float
+    hover_lag_deg: float
+    spectral_radius: float
+    distance_end: float
+    distance_hover: float
+    peak: float
+
+    def summary(self) -> str:
+        """Two lines: convergence (residual as a bound), mean lag, spectral radius, distances."""
+        return "\n".join([
+            f"{self.label}: Newton from the last simulated revolution converges, residual "
+            f"{format_small(self.residual)}; mean lag {self.mean_lag_deg:.1f} deg "
+            f"(hover {self.hover_lag_deg:.1f} deg), spectral radius {self.spectral_radius:.3f}; "
+            f"distance of the simulated last revolution from it {self.distance_end:.1e}",
+            _join("   distance from the hover equilibrium:", round(float(self.distance_hover), 1)),
+        ])
+
+    def facts(self) -> dict:
+        """Mean lag angles (deg, one decimal), residual (a bound), spectral radius (three
+        decimals), distance and peak (norm units, one decimal)."""
+        return {
+            "ch7_far_lag": round(float(self.mean_lag_deg), 1),
+            "ch7_far_lag_hover": round(float(self.hover_lag_deg), 1),
+            "ch7_far_res": format_small(self.residual),
+            "ch7_far_rho": round(float(self.spectral_radius), 3),
+            "ch7_far_dist": round(float(self.distance_hover), 1),
+            "ch7_far_peak": round(float(self.peak), 1),
+        }
+
+
+def far_motion(data: MotionData, index: int = 1) -> FarMotion:
+    """The periodic motion the first motion of experiment ``index`` of ``data`` settles on
+    (the backward C.G. at ``mu = 0.05``): :func:`rotorlyap.model.steady.periodic_motion`
+    started from its last revolution, and its Floquet multipliers
+    (:func:`rotorlyap.analysis.floquet.blade_floquet`)."""
+    h, off, p, mu = data.histories[index], data.offsets[index], data.parameters[index], data.mu_values[index]
+    k = points_per_revolution(h) + 1
+    far = periodic_motion(p, mu, start=last_revolution(h, off[0]))
+    floq = blade_floquet(p, mu, steady=far)
+    dist_end = float(scaled_norm(h.x[-k:, 0] + off[0] - far.xi(h.psi[-k:]), DEFAULT_SCALES).max())
+    return FarMotion(label=h.label, residual=float(far.residual), mean_lag_deg=float(far.harmonics_deg[1, 0]),
+                     hover_lag_deg=float(np.degrees(off[0, 1])), spectral_radius=float(floq.spectral_radius),
+                     distance_end=dist_end, distance_hover=max_distance(far, off[0]), peak=float(h.peaks[-1, 0]))
+
+
 # --------------------------------------------------------------------------------------
 # W' near the origin
 # --------------------------------------------------------------------------------------
@@ -745,6 +1788,42 @@ class OriginData:
     def relative_rate(self) -> np.ndarray:
         """``max W' / max W`` (per rad): scale-free, comparable between functions."""
         return self.max_dW / self.max_W
+
+    def export(self) -> dict:
+        """The arrays for :func:`rotorlyap.figures.export.figure_csv`."""
+        return {"radius": self.radii, "labels": list(self.labels), "max_dW": self.max_dW, "max_W": self.max_W}
+
+    def summary(self) -> str:
+        """The radii and, per function, ``max W' / max W`` on each sphere.
+
+        Two significant digits; one for the functions about the periodic motion (labels ending
+        in "periodic motion"), where the largest ``W'`` is a search over the azimuth too that
+        settles on maxima a few per cent apart when round-off changes (README, "What a
+        committed output may print").
+        """
+        lines = [_join("radii:", np.array2string(self.radii, formatter={"float": lambda v: f"{v:.0e}"}))]
+        for lab, r in zip(self.labels, self.relative_rate):
+            fmt = f"{{:.{1 if lab.endswith('periodic motion') else 2}g}}"
+            lines.append(_join(f"{lab:46s}", np.array2string(r, formatter={"float": fmt.format})))
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """``max W' / max W`` on the smallest sphere (per rad, three decimals) of the energy
+        (row 0) and of the quadratic function with ``Q = I`` (row 1) in hover; the radii between
+        which the latter turns positive (two decimals); the range of radii where the last
+        function (the quadratic one about the periodic motion) is negative (one digit). The
+        rows are those of :meth:`QuadraticData.origin_functions`."""
+        rr = self.relative_rate
+        i_pos = int(np.flatnonzero(rr[1] > 0)[0])
+        neg = np.flatnonzero(rr[-1] < 0)
+        return {
+            "ch7_org_energy": round(float(rr[0, 0]), 3),
+            "ch7_org_quad": round(float(rr[1, 0]), 3),
+            "ch7_org_quad_pos": round(float(self.radii[i_pos]), 2),
+            "ch7_org_quad_neg": round(float(self.radii[i_pos - 1]), 2),
+            "ch7_org_per_lo": float("%.1g" % self.radii[neg[0]]),
+            "ch7_org_per_hi": float("%.1g" % self.radii[neg[-1]]),
+        }
 
 
 def origin_data(functions: dict, radii=None, *, n_psi: int = 12, n_sphere: int = 256,
@@ -781,3 +1860,15 @@ def plot_origin(data: OriginData, ax) -> None:
     ax.set_xlabel(r"sphere radius $r = \|x\|$")
     ax.set_ylabel(r"$\max W' \,/\, \max W$ on the sphere (1/rad)")
     ax.legend(fontsize=7)
+
+
+def figure_origin(data: OriginData) -> Figure:
+    """The figure of :func:`plot_origin` (8.5 x 4.6 in), laid out and closed in pyplot.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    fig, ax = subplots(figsize=(8.5, 4.6))
+    plot_origin(data, ax)
+    return finish(fig)

@@ -1,0 +1,296 @@
+"""Data objects, figures and printed numbers of the blade-model and Table I chapters (3 and 4).
+
+Each test names the fact it checks. The chapters print ``summary()`` and glue ``facts()``; these
+tests check what those say (and that a glued value is a plain Python number, whose text is
+the same on every machine), not the committed text itself, which nbval compares.
+"""
+
+import math
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
+
+from rotorlyap.figures import blade_model as bm  # noqa: E402
+from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.model.airfoil import LinearAirfoil  # noqa: E402
+from rotorlyap.model.modes import closed_forms, hover_modes, pitch_mode  # noqa: E402
+from rotorlyap.model.parameters import CG_POSITIONS, BladeParameters  # noqa: E402
+
+
+def _plain(facts: dict) -> bool:
+    """Every value a Python int, float or str: glued, it prints as ``0.25``, never as
+    ``np.float64(0.25)``."""
+    return all(type(v) in (int, float, str) for v in facts.values())
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 3
+# --------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def geo(forward):
+    return bm.schematic_data(forward)
+
+
+@pytest.fixture(scope="module")
+def coeff(forward):
+    linear = LinearAirfoil(lift_slope=forward.lift_slope, cd0=forward.airfoil.cd_min, name="linear option")
+    return bm.coefficient_data([forward.airfoil, linear], n=361)
+
+
+@pytest.fixture(scope="module")
+def aoa(forward):
+    return bm.angle_of_attack_data(forward, n_fine=24)
+
+
+def test_schematic_facts_give_the_hub_elements_in_metres_and_the_chordwise_points(geo):
+    facts = geo.facts()
+    assert [facts[f"ch3_e{k}"] for k in range(1, 5)] == [0.0677, -0.0339, 0.1354, 0.2032]
+    assert facts["ch3_pitch_hinge"] == 0.406 and facts["ch3_cutout"] == 1.078 and facts["ch3_cuff"] == 0.672
+    assert facts["ch3_n_stations"] == 12
+    assert facts["ch3_xc_pitch_axis"] == 0.25 and facts["ch3_xc_ac"] == 0.235
+    assert {k: facts["ch3_xc_cg_" + k] for k in CG_POSITIONS} == CG_POSITIONS
+    assert facts["ch3_cg_step"] == 0.02
+    assert _plain(facts)
+
+
+def test_schematic_summary_has_the_hub_cutout_stations_and_chordwise_lines(geo):
+    lines = geo.summary().splitlines()
+    assert len(lines) == 5
+    assert lines[0] == "hub elements e1..e5 (m): [ 0.0677 -0.0339  0.1354  0.2032  0.    ]"
+    assert lines[3] == "12 aerodynamic stations from r/R = 0.1453 to 0.9920"
+    assert lines[4].endswith("C.G. forward 0.215, neutral 0.235, backward 0.255")
+
+
+def test_schematic_export_is_every_field_but_the_cg_mapping(geo, tmp_path):
+    cols = geo.export()
+    assert "cg_positions" not in cols and "stations" in cols and "radius" in cols
+    text = figure_csv(cols, tmp_path / "schematic.csv").read_text()
+    assert text.startswith("field,") and "stations" in text
+
+
+def test_figure_functions_return_figures_closed_in_pyplot(geo, coeff, aoa):
+    before = plt.get_fignums()
+    figs = {4: bm.figure_blade_schematic(geo), 6: bm.figure_airfoil_coefficients(coeff),
+            2: bm.figure_angle_of_attack(aoa)}
+    for n_axes, fig in figs.items():
+        assert isinstance(fig, Figure) and len(fig.axes) == n_axes
+    assert plt.get_fignums() == before  # nothing for the notebook to close, nothing shown twice
+
+
+def test_closed_form_facts_are_the_closed_forms_rounded(forward):
+    data = bm.closed_form_data(forward)
+    cf = closed_forms(forward)
+    assert data.facts() == {"ch3_nu_beta": round(cf.flap_frequency, 4), "ch3_nu_zeta": round(cf.lag_frequency, 3),
+                            "ch3_nu_theta": round(cf.pitch_frequency, 2)}
+    assert data.summary().startswith("closed forms (zero pitch): nu_beta = 1.0064")
+
+
+def test_moments_about_each_hinge_balance_at_the_hover_equilibrium(forward_hover):
+    data = bm.hinge_balance_data(forward_hover)
+    total = data.conservative + data.aerodynamic + data.damping
+    assert np.all(np.abs(total) < 1e-6 * np.abs(data.conservative).max())
+    assert data.case == "forward C.G."
+    lines = data.summary().splitlines()
+    assert len(lines) == 4 and all(line.split()[-3] == "0.0" for line in lines[1:])  # "sum 0.0 N m"
+    assert data.facts() == {"ch3_flap_aero": 98840, "ch3_lag_aero": 6040}
+
+
+def test_negative_delta3_lowers_the_classical_flap_frequency(forward):
+    data = bm.pitch_flap_coupling_data(forward)
+    assert data.pitch_flap_coupling == -0.4
+    assert data.effective_flap_frequency < data.flap_frequency
+    assert data.effective_flap_frequency == pytest.approx(
+        math.sqrt(data.flap_frequency ** 2 + data.lock_number / 8 * data.pitch_flap_coupling))
+    facts = data.facts()
+    assert facts["ch3_kp"] == 0.4 and facts["ch3_delta3_deg"] == -21.8 and _plain(facts)
+
+
+def test_pitch_damping_estimate_is_negative_and_vanishes_without_the_couple(forward):
+    from dataclasses import replace
+
+    assert bm.pitch_damping_estimate(forward) == pytest.approx(-1.16, abs=0.01)
+    assert bm.pitch_damping_estimate(replace(forward, cm_pitch_rate=0.0)) == 0.0
+
+
+@pytest.mark.slow
+def test_the_couple_makes_the_backward_pitch_mode_decay():
+    data = bm.pitch_damping_data()
+    facts = data.facts()
+    assert facts["ch3_n_pitch_decay_on"] == "all three" and facts["ch3_n_pitch_decay_off"] == "two"
+    assert facts["ch3_pitch_off_backward"] > 0 > facts["ch3_pitch_on_backward"]
+    assert data.with_couple[0] == pitch_mode(hover_modes(BladeParameters.table_i("forward")))
+    assert len(data.summary().splitlines()) == 4 and _plain(facts)
+
+
+def test_coefficient_summary_says_the_linear_option_has_the_same_lift_slope(coeff):
+    assert coeff.lift_slope[0] == coeff.lift_slope[1]
+    lines = coeff.summary().splitlines()
+    assert lines[0].startswith("NACA 23012 model: cl(0) = ")
+    assert lines[2].endswith("/deg (linear option: the same)")
+
+
+def test_coefficient_summary_prints_a_different_lift_slope(forward):
+    other = LinearAirfoil(lift_slope=2 * math.pi, name="flat plate")
+    data = bm.coefficient_data([forward.airfoil, other], n=73)
+    assert data.summary().splitlines()[2].endswith("(flat plate: 6.283 /rad)")
+
+
+def test_angle_of_attack_facts_count_the_reverse_flow_stations(aoa):
+    facts = aoa.facts()
+    assert facts["ch3_n_reverse"] == int((np.abs(aoa.alpha_stations[-1]) > 90).sum()) > 0
+    assert facts["ch3_alpha_root"] < 0 < facts["ch3_alpha_tip"]  # inflow angle exceeds the pitch at the root
+    assert len(aoa.summary().splitlines()) >= 1 + len(aoa.cases) and _plain(facts)
+
+
+def test_number_words_say_all_for_every_case():
+    assert [bm._how_many(n, 3) for n in range(4)] == ["none", "one", "two", "all three"]
+    assert bm._how_many(2, 2) == "two"
+
+
+@pytest.mark.slow
+def test_generated_code_matches_a_fresh_derivation(forward_hover):
+    from rotorlyap.model import derivation
+
+    check = bm.generated_code_check(derivation.derive(), forward_hover)
+    assert check.hash_current and check.mass_matrix_agrees
+    assert "rhs_terms" in check.functions
+    assert check.summary().splitlines()[1] == "cached code matches the current derivation hash: True"
+
+
+@pytest.mark.slow
+def test_energy_function_is_positive_definite_in_all_three_cases():
+    data = bm.positivity_data()
+    facts = data.facts()
+    assert facts["ch3_n_posdef"] == "all three"
+    assert all(6000 < facts["ch3_hessU_min_" + cg] < 7000 for cg in CG_POSITIONS)
+    assert len(data.summary().splitlines()) == 3 and _plain(facts)
+
+
+# --------------------------------------------------------------------------------------
+# Chapter 4
+# --------------------------------------------------------------------------------------
+
+
+def test_table_i_markdown_has_one_row_per_table_i_field(forward):
+    lines = bm.table_i_markdown(forward).splitlines()
+    assert lines[0] == "| quantity | field | value | unit |"
+    assert len(lines) == 2 + len(bm.table_i_rows(forward))
+
+
+def test_most_fields_rest_on_an_assumption(forward):
+    data = bm.assumption_data(forward)
+    assert 0 < len(data.rows) < data.n_fields
+    assert data.summary() == f"{len(data.rows)} of {data.n_fields} fields rest wholly or partly on an assumption"
+    assert data.markdown().splitlines()[0] == "| field | value | unit | source or reason |"
+
+
+def test_airfoil_table_gives_angles_in_degrees_and_slopes_per_degree(forward):
+    data = bm.airfoil_table_data(forward)
+    rows = {r[0]: r for r in data.rows}
+    assert rows["`lift_slope`"][1:3] == (0.107, "1/deg")
+    assert rows["`alpha_stall`"][2] == "deg" and 10 < rows["`alpha_stall`"][1] < 25
+    assert rows["`cl_max`"][2] == ""
+    assert data.summary() == ("model used by the blade: NACA 23012 with its moment reference moved to "
+                              "0.235 c (Table I), cm_ac = -0.014")
+
+
+def test_pitch_axis_reading_moves_every_cg_by_the_axis_to_centre_distance(forward):
+    old = bm.pitch_axis_reading(forward)
+    assert old == {"forward": 0.23, "neutral": 0.25, "backward": 0.27}
+
+
+def test_choices_facts_state_both_readings_of_e2_and_of_the_cg(forward):
+    data = bm.choices_data(forward)
+    facts = data.facts()
+    assert facts["ch4_chordwise_deg"] == 9.5
+    assert 0 < facts["ch4_e2_precone"] < 1  # the vertical reading acts like a small precone
+    assert facts["ch4_cg_bwd"] == 0.255 and facts["ch4_oldcg_bwd"] == 0.27
+    assert facts["ch4_ac_ahead"] == 0.015 and facts["ch4_bwd_behind_pa"] == 0.005
+    assert facts["ch4_cmq"] == -1.5708 and facts["ch4_tip_speed"] == 222.5
+    assert _plain(facts) and len(data.summary().splitlines()) == 4
+
+
+@pytest.fixture(scope="module")
+def cases():
+    """The derived quantities of the three Table I cases (trims cached per parameter set)."""
+    return bm.derived_table_data()
+
+
+def test_derived_table_has_a_column_per_case_and_facts_of_the_forward_case(cases):
+    header = cases.markdown().splitlines()[0]
+    assert header == "| quantity | unit | I forward | II neutral | III backward |"
+    facts = cases.facts()
+    assert facts["ch4_coll_fwd"] > facts["ch4_coll_neu"] > facts["ch4_coll_bwd"]
+    assert 0 < facts["ch4_g_droop"] < 0.5 and _plain(facts)
+    assert cases["forward"] is cases.quantities[0]
+
+
+def test_vacuum_pitch_frequency_lies_above_its_closed_form_in_every_case():
+    data = bm.vacuum_modes_data()
+    facts = data.facts()
+    assert all(facts["ch4_pitch_shift_" + s] >= 0 for s in ("fwd", "neu", "bwd"))
+    assert facts["ch4_flap_pitch_shape"] == 0.4  # the pitch follows the flap at -tan(delta3)
+    assert data.summary().splitlines()[0].startswith("forward C.G., vacuum (closed forms: flap 1.0064")
+
+
+def test_air_modes_facts_give_the_forward_flap_mode_and_nu_e():
+    data = bm.air_modes_data()
+    facts = data.facts()
+    assert facts["ch4_nu_e"] == 0.78 and facts["ch4_flap_air_shape"].startswith("(1.00, ")
+    assert sum(line.endswith("hover with air") for line in data.summary().splitlines()) == 3
+
+
+def test_all_three_hover_equilibria_are_linearly_stable_with_shrinking_margins():
+    data = bm.hover_stability_data()
+    facts = data.facts()
+    assert all("linearly stable" in line for line in data.summary().splitlines())
+    assert facts["ch4_slow_fwd"] < facts["ch4_slow_neu"] < facts["ch4_slow_bwd"] < 0
+    # the backward case's slowest mode takes about a hundred revolutions to halve
+    assert facts["ch4_slow_bwd_halving"] == pytest.approx(math.log(2) / -facts["ch4_slow_bwd"], rel=0.1)
+    assert _plain(facts)
+
+
+@pytest.mark.slow
+def test_only_the_forward_case_is_stable_under_all_four_combinations():
+    data = bm.sensitivity_data()
+    assert len(data.rows) == 12
+    unstable = {(r.reading, r.damping, r.case) for r in data.rows if r.least_damped.unstable}
+    assert {case for _, _, case in unstable} == {"neutral", "backward"}
+    assert not any(reading == "a.c." and damping == "thin airfoil" for reading, damping, _ in unstable)
+    facts = data.facts()
+    assert facts["ch4_s_ac_0_bwd_pitch"] > 0 and facts["ch4_s_pa_q_bwd_max"] > 0
+    assert len(data.summary().splitlines()) == 13 and _plain(facts)
+
+
+@pytest.mark.slow
+def test_the_pitch_damping_leaves_the_slow_real_lag_mode_where_it_is():
+    data = bm.variants_data()
+    assert data.labels[0] == "Table I" and data.pitch_growth.shape == data.largest_real.shape == (4, 2)
+    assert data.largest_real[0, 0] == pytest.approx(data.largest_real[0, 1], abs=1e-3)
+    assert np.isnan(data.largest_real[1]).all()  # no pitch-flap coupling: no real mode
+    assert data.facts() == {"ch4_bwd_real_q": -0.007, "ch4_bwd_real_0": -0.007}
+    assert "largest real none" in data.summary()
+
+
+def test_cg_sweep_pair_exports_both_sweeps_with_complex_parts_split(tmp_path):
+    data = bm.cg_sweep_pair_data((0.22, 0.255, 0.27))
+    cols = data.export()
+    assert {"eigenvalues_real", "eigenvalues_imag", "no_pitch_damping_eigenvalues_real", "cg",
+            "no_pitch_damping_flutter_cg"} <= set(cols)
+    assert not any(np.iscomplexobj(v) for v in cols.values())
+    assert figure_csv(cols, tmp_path / "sweep.csv").read_text().startswith("field,")
+    facts = data.facts()
+    assert facts["ch4_grid_lo"] == 0.22 and facts["ch4_grid_hi"] == 0.27
+    assert 0.235 < facts["ch4_flutter_cg0"] < 0.255  # without pitch damping, just behind the a.c.
+    assert np.isnan(data.with_damping.flutter_cg)
+    assert data.summary().splitlines()[1] == "with pitch damping"
+    fig = bm.figure_cg_sweep(data)
+    assert isinstance(fig, Figure) and len(fig.axes) == 2

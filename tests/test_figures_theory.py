@@ -1,0 +1,244 @@
+"""rotorlyap.figures.theory: what chapters 1 and 2 print (summary) and quote (facts), and their figures.
+
+Each fact must be the data field it names, rounded to the digits the chapter states; each
+summary must hold those numbers; each figure function must return a finished figure of the
+book's size, closed in pyplot. The certificate is made once, on a coarse azimuth grid
+(24 azimuths), to keep the file quick.
+"""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import rotorlyap  # noqa: E402
+from rotorlyap.figures import theory  # noqa: E402
+from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.methods.examples import mathieu_duffing  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def toy():
+    return mathieu_duffing(damping=0.4, modulation=0.3, softening=1.0)
+
+
+@pytest.fixture(scope="module")
+def res(toy):
+    return rotorlyap.technical_stability(toy.f, toy.W, 1.0, dim=toy.dim, dW=toy.dW, n_psi=24, n_sphere=256)
+
+
+@pytest.fixture(scope="module")
+def history(toy, res):
+    return theory.norm_history_data(toy, res, [0, 6, 12], n_starts=4, n_periods=2)
+
+
+@pytest.fixture(scope="module")
+def levels(toy, res):
+    return theory.level_sets_data(toy, res, n_grid=31, extent=1.15)
+
+
+def _plain(value) -> bool:
+    return type(value) in (int, float)
+
+
+# ---- the certificate (steps 1 to 6)
+
+def test_steps_facts_are_the_certificate_rounded_to_the_digits_chapter_2_quotes(res):
+    facts = theory.steps_facts(res)
+    assert facts == {
+        "ch2_A_req": 1.0,
+        "ch2_step3": round(res.step3_max_dW, 3),
+        "ch2_A": round(res.A, 4),
+        "ch2_alpha": round(res.alpha, 4),
+        "ch2_lam_min": round(float(res.lambda0.min()), 4),
+        "ch2_lam_max": round(float(res.lambda0.max()), 4),
+        "ch2_n_stable": int(res.stable.sum()),
+    }
+
+
+def test_facts_are_plain_python_numbers_so_the_glued_text_carries_no_numpy_type(res, history, levels):
+    for facts in (theory.steps_facts(res), history.facts(), levels.facts(),
+                  theory.max_norm_data(history).facts()):
+        assert all(_plain(v) for v in facts.values()), facts
+        assert not any("np." in repr(v) for v in facts.values())
+
+
+def test_facts_prefix_names_the_chapter_quoting_them(res, history):
+    assert set(theory.steps_facts(res, prefix="ch9")) == {
+        "ch9_A_req", "ch9_step3", "ch9_A", "ch9_alpha", "ch9_lam_min", "ch9_lam_max", "ch9_n_stable"}
+    assert set(history.facts(prefix="ch2")) == {"ch2_max_ratio", "ch2_A", "ch2_lam_min", "ch2_lam_max"}
+
+
+def test_steps_summary_holds_every_step_number(res):
+    lines = theory.steps_summary(res).splitlines()
+    assert lines[0] == repr(res) and lines[1] == res.message
+    assert lines[2] == "step 3: largest W' on ||x|| = 1.00: %.4f" % res.step3_max_dW
+    assert lines[3] == "step 3: A = %.4f;  step 4: alpha = %.5f" % (res.A, res.alpha)
+    j_min, j_max = int(np.argmin(res.lambda0)), int(np.argmax(res.lambda0))
+    assert lines[4] == "step 5: lambda0 from %.4f (psi = %.0f deg) to %.4f (psi = %.0f deg)" % (
+        res.lambda0[j_min], np.degrees(res.psi[j_min]), res.lambda0[j_max], np.degrees(res.psi[j_max]))
+    assert lines[5].endswith("stable at %d of 24 azimuths" % res.stable.sum())
+    assert "%.2e" % res.max_dW.max() in lines[5]
+
+
+def test_certificate_summary_is_the_message_then_A_alpha_and_the_range_of_lambda0(res):
+    message, numbers = theory.certificate_summary(res).splitlines()
+    assert message == res.message
+    assert numbers == "A = %.4f, alpha = %.4f, lambda0 from %.4f to %.4f" % (
+        res.A, res.alpha, res.lambda0.min(), res.lambda0.max())
+
+
+# ---- phase portrait (chapter 1)
+
+def test_phase_portrait_summary_gives_the_bounds_and_the_fate_of_each_outside_motion(toy, res):
+    portrait = theory.phase_portrait_data(toy, res, 0, n_starts=4, n_periods=2)
+    lines = portrait.summary().splitlines()
+    assert lines[0] == "phase portrait: A = %.4f, lambda0(psi0) = %.4f" % (portrait.A, portrait.lambda0)
+    assert lines[1].endswith("%.4f" % portrait.max_inside_norm)
+    assert portrait.max_inside_norm < portrait.lambda0  # unit scales: the theorem, in the plane
+    assert len(lines) == 2 + len(portrait.outside)
+    for line, path, esc in zip(lines[2:], portrait.outside, portrait.outside_escaped):
+        assert line == "motion started at (y, y') = (%.2f, %.2f): %s" % (*path[0], "escapes" if esc else "bounded")
+
+
+# ---- norm history (chapter 1) and the largest norm per motion (chapter 2)
+
+def test_norm_history_facts_are_its_fields_rounded_to_three_decimals(history):
+    assert history.facts() == {
+        "ch1_max_ratio": round(history.max_ratio, 3),
+        "ch1_A": round(history.A, 3),
+        "ch1_lam_min": round(float(history.lambda0.min()), 3),
+        "ch1_lam_max": round(float(history.lambda0.max()), 3),
+    }
+
+
+def test_norm_history_summary_counts_the_motions_and_periods(history):
+    assert history.n_motions == 12 and history.n_periods == 2.0 and history.fraction == 0.999
+    assert history.summary() == "largest ||x|| / A over 12 motions and 2 periods: %.3f" % history.max_ratio
+
+
+def test_max_norm_data_has_one_row_per_motion_and_the_history_s_largest_ratio(history):
+    check = theory.max_norm_data(history)
+    assert check.start_psi_deg.shape == check.max_norm_over_A.shape == check.start_radius_over_A.shape == (12,)
+    assert check.max_ratio == history.max_ratio
+    assert np.array_equal(np.unique(check.start_psi_deg), np.degrees(history.psi_grid[[0, 6, 12]]))
+    np.testing.assert_allclose(np.unique(check.start_radius_over_A * history.A),
+                               np.sort(history.lambda0[[0, 6, 12]]), rtol=1e-12)
+    assert check.summary() == "12 motions; largest ||x|| / A: %.3f" % history.max_ratio
+    assert check.facts() == {"ch2_max_ratio": round(history.max_ratio, 3)}
+
+
+def test_max_norm_csv_has_the_three_columns_one_row_per_motion(history, tmp_path):
+    text = figure_csv(theory.max_norm_data(history), tmp_path / "m.csv").read_text().splitlines()
+    assert text[0] == "start_psi_deg,max_norm_over_A,start_radius_over_A" and len(text) == 13
+
+
+# ---- level sets (chapter 2)
+
+def test_level_sets_panels_sit_at_the_smallest_start_region_and_the_tightest_shell(res, levels):
+    assert levels.smallest.psi == res.psi[np.argmin(res.lambda0)]
+    assert levels.tightest.psi == res.psi[np.argmax(res.max_dW)]
+    assert levels.panels == (levels.smallest, levels.tightest)
+
+
+def test_level_sets_facts_are_the_azimuths_in_degrees_and_the_positive_percentages(levels):
+    assert levels.facts() == {
+        "ch2_psi_small": int(round(np.degrees(levels.smallest.psi))),
+        "ch2_psi_tight": int(round(np.degrees(levels.tightest.psi))),
+        "ch2_pos_frac_small": round(100 * levels.smallest.positive_fraction_requested, 1),
+        "ch2_pos_frac_tight": round(100 * levels.tightest.positive_fraction_requested, 1),
+    }
+
+
+def test_level_sets_summary_has_one_line_per_panel_with_its_numbers(levels):
+    lines = levels.summary().splitlines()
+    assert len(lines) == 2
+    for line, panel in zip(lines, levels.panels):
+        assert line == panel.summary()
+        assert "lambda0 = %.4f;" % panel.lambda0 in line
+        assert "from %.3f to %.3f" % (panel.dW.min(), panel.dW.max()) in line
+
+
+def test_level_sets_export_is_every_third_line_of_the_figure_grid(levels):
+    coarse = levels.export(step=3)
+    assert len(coarse) == 2
+    for small, panel in zip(coarse, levels.panels):
+        assert small.y.shape == (11,) and small.W.shape == small.dW.shape == (11, 11)
+        assert np.array_equal(small.y, panel.y[::3]) and np.array_equal(small.dW, panel.dW[::3, ::3])
+        assert small.psi == panel.psi and small.alpha == panel.alpha
+
+
+def test_level_set_subsampled_refuses_a_step_below_one(levels):
+    with pytest.raises(ValueError, match="step"):
+        levels.smallest.subsampled(0)
+
+
+# ---- start region (chapter 2)
+
+def test_start_region_summary_quotes_lambda0_and_max_dW_a_quarter_period_apart(res):
+    region = theory.start_region_data(res)
+    lam, dw = region.summary().splitlines()
+    assert lam == f"lambda0 at psi = 0, 90, 180, 270 deg: {np.round(res.lambda0[::6], 4)}"
+    assert dw == f"max W' on the shell at psi = 0, 90, 180, 270 deg: {np.round(res.max_dW[::6], 6)}"
+
+
+def test_start_region_csv_has_one_row_per_azimuth(res, tmp_path):
+    text = figure_csv(theory.start_region_data(res), tmp_path / "s.csv").read_text().splitlines()
+    assert text[0] == "psi_deg,lambda0,A,A_requested,max_dW" and len(text) == 25
+
+
+# ---- convergence (chapter 2)
+
+def _convergence(A, lam_mean, n_sphere=(0, 16, 64)):
+    n = len(n_sphere)
+    return theory.ConvergenceData(
+        n_sphere=np.array(n_sphere), A=np.array(A, dtype=float), alpha=np.ones(n), lambda0_min=np.ones(n),
+        lambda0_mean=np.array(lam_mean, dtype=float), A_raw=np.ones(n), lambda0_mean_raw=np.ones(n))
+
+
+def test_convergence_deviation_ignores_the_structured_directions_only_run():
+    conv = _convergence(A=[0.5, 0.404, 0.4], lam_mean=[0.1, 0.3, 0.3])
+    assert conv.largest_deviation == pytest.approx(0.01)
+    assert conv.facts() == {"ch2_conv_dev": 1.0}
+    assert conv.summary().splitlines()[-1] == "largest deviation from the finest, refined, n_sphere >= 16: 1.00 %"
+
+
+def test_convergence_summary_prints_each_row_to_four_decimals():
+    conv = _convergence(A=[0.44491, 0.41738, 0.40063], lam_mean=[0.3, 0.3, 0.3])
+    lines = conv.summary().splitlines()
+    assert lines[0] == "n_sphere:          [ 0 16 64]"
+    assert lines[1] == "A (refined):       [0.4449 0.4174 0.4006]"
+
+
+def test_convergence_without_sampled_runs_has_no_deviation():
+    assert np.isnan(_convergence(A=[0.4], lam_mean=[0.3], n_sphere=(0,)).largest_deviation)
+
+
+# ---- figures
+
+def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_pyplot(toy, res, history, levels):
+    portrait = theory.phase_portrait_data(toy, res, 0, n_starts=2, n_periods=1)
+    conv = _convergence(A=[0.44, 0.41, 0.40], lam_mean=[0.3, 0.29, 0.28])
+    cases = [
+        (theory.figure_phase_portrait(portrait, title="t"), (7, 4.2), 1),
+        (theory.figure_norm_history(history), (8, 3.6), 1),
+        (theory.figure_level_sets(levels), (11, 5.4), 2),
+        (theory.figure_start_region(theory.start_region_data(res)), (8, 3.6), 2),
+        (theory.figure_max_norm(theory.max_norm_data(history)), (8, 3.4), 1),
+        (theory.figure_convergence(conv), (7.5, 3.8), 1),
+    ]
+    for fig, size, n_axes in cases:
+        assert tuple(fig.get_size_inches()) == pytest.approx(size)
+        assert len(fig.axes) == n_axes
+        assert fig.number not in plt.get_fignums()
+    assert cases[0][0].axes[0].get_title() == "t"
+    assert "0.999" in cases[1][0].axes[0].get_title()
+
+
+def test_all_names_exist():
+    assert all(hasattr(theory, name) for name in theory.__all__)

@@ -1,0 +1,228 @@
+"""What the chapter "Your own blade" prints and glues (rotorlyap.figures.your_blade).
+
+Each test names the fact it checks. The chapter's own numbers are compared by nbval; here the
+data objects are checked against the package functions they gather, and their text against
+the layout the chapter prints, on the chapter's blades with coarse grids.
+"""
+
+import dataclasses
+from types import SimpleNamespace
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import rotorlyap  # noqa: E402
+from rotorlyap.figures import your_blade  # noqa: E402
+from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.model.modes import least_damped  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def base():
+    return rotorlyap.BladeParameters.table_i(cg="neutral")
+
+
+@pytest.fixture(scope="module")
+def mine(base):
+    """The chapter's variant."""
+    return dataclasses.replace(
+        base, mass_per_length=11.0, hub_elements=(0.01, -0.005, 0.04, 0.03, 0.0),
+        pitch_stiffness=12_000.0, cg_position=0.22,
+        airfoil=dataclasses.replace(base.airfoil, alpha_zero_lift=0.0, cm_ac=0.0),
+    )
+
+
+@pytest.fixture(scope="module")
+def hover(base, mine):
+    return your_blade.hover_comparison(rotorlyap.derived_quantities(base), rotorlyap.derived_quantities(mine))
+
+
+@pytest.fixture(scope="module")
+def readings(base, mine):
+    return your_blade.both_readings(base, mine, 0.0, A=1.0, n_psi=4, n_sphere=32)
+
+
+def _fake_motion(mu, offset):
+    """A stand-in for a PeriodicMotion: only ``mu`` and ``harmonics_deg`` are read."""
+    return SimpleNamespace(mu=mu, harmonics_deg=offset + np.arange(9.0).reshape(3, 3) / 100)
+
+
+# --- step 1 ------------------------------------------------------------------------------
+
+
+def test_parameter_changes_lists_changed_fields_in_table_order_with_units_then_airfoil_coefficients(base, mine):
+    changes = your_blade.parameter_changes(base, mine)
+    assert [r[0] for r in changes.rows] == ["hub_elements", "pitch_stiffness", "cg_position", "mass_per_length",
+                                            "airfoil.alpha_zero_lift", "airfoil.cm_ac"]
+    assert changes.rows[1] == ("pitch_stiffness", "6304.0", "12000.0", "N m/rad")
+    assert changes.summary().splitlines() == [
+        "changed fields:",
+        "  hub_elements: (0.01, -0.005, 0.02, 0.03, 0.0) -> (0.01, -0.005, 0.04, 0.03, 0.0) R1",
+        "  pitch_stiffness: 6304.0 -> 12000.0 N m/rad",
+        "  cg_position: 0.235 -> 0.22 c",
+        "  mass_per_length: 9.0 -> 11.0 kg/m",
+        "  airfoil.alpha_zero_lift: -0.02094 -> 0",
+        "  airfoil.cm_ac: -0.014 -> 0",
+    ]
+
+
+def test_parameter_changes_of_a_blade_against_itself_are_none(base):
+    changes = your_blade.parameter_changes(base, base)
+    assert changes.rows == ()
+    assert changes.summary() == "changed fields:"
+
+
+def test_refusals_give_the_error_type_and_the_constructors_message_and_mark_accepted_changes(mine):
+    r = your_blade.refusals(mine, [dict(chord=-0.4), dict(inflow_model="vortex"), dict(pitch_stiffness=1.0)])
+    assert r.errors[0][0] == "ValueError" and "chord must be > 0" in r.errors[0][1]
+    assert r.errors[2] == (None, None)
+    lines = r.summary().splitlines()
+    assert lines[0].startswith("{'chord': -0.4}: ValueError: chord must be > 0 on the span")
+    assert lines[1].startswith("{'inflow_model': 'vortex'}: ValueError: inflow_model must be one of")
+    assert lines[2] == "{'pitch_stiffness': 1.0}: accepted"
+
+
+# --- step 2 ------------------------------------------------------------------------------
+
+
+def test_hover_summary_holds_the_derived_quantities_in_degrees_and_the_least_damped_air_mode(mine):
+    d = rotorlyap.derived_quantities(mine)
+    s = your_blade.hover_summary(d)
+    worst = least_damped(d.air_modes)
+    assert s.lock_number == pytest.approx(d.lock_number)
+    assert s.collective_deg == pytest.approx(np.degrees(d.collective))
+    assert (s.coning_deg, s.lag_angle_deg, s.pitch_angle_deg) == pytest.approx(np.degrees(d.equilibrium))
+    assert s.largest_growth_rate == pytest.approx(worst.growth_rate)
+    assert s.least_damped_hinge == worst.dominant_hinge
+    assert all(m.growth_rate <= s.largest_growth_rate for m in d.air_modes)
+    # the lag mode is the slow one, the pitch mode the fast one
+    assert 0.0 < s.lag_frequency_vacuum < 1.0 < s.pitch_frequency_vacuum
+
+
+def test_hover_facts_are_the_four_glued_names_with_growth_rates_rounded_to_three_decimals(hover):
+    facts = hover.facts()
+    assert list(facts) == ["own_growth_base", "own_growth_mine", "own_hinge_base", "own_hinge_mine"]
+    assert facts["own_growth_base"] == round(hover.base.largest_growth_rate, 3)
+    assert facts["own_growth_mine"] == round(hover.variant.largest_growth_rate, 3)
+    assert facts["own_hinge_mine"] == hover.variant.least_damped_hinge
+    # every linear hover mode of both blades decays (the chapter's statement)
+    assert facts["own_growth_base"] < 0 and facts["own_growth_mine"] < 0
+
+
+def test_hover_summary_table_has_a_header_and_one_row_per_quantity_with_label_wide_columns(hover):
+    lines = hover.summary().splitlines()
+    assert lines[0] == f"{'quantity':38s} {'Table I neutral':>16s} {'variant':>10s}"
+    assert len(lines) == 1 + len(your_blade.HoverSummary.ROWS)
+    assert lines[1] == f"{'Lock number':38s} {hover.base.lock_number:16.3f} {hover.variant.lock_number:10.3f}"
+    assert lines[-1] == f"{'its hinge':38s} {hover.base.least_damped_hinge:>16s} {hover.variant.least_damped_hinge:>10s}"
+    assert len({len(line) for line in lines}) == 1
+
+
+def test_hover_comparison_needs_two_labels(base):
+    d = rotorlyap.derived_quantities(base)
+    with pytest.raises(ValueError, match="two blades"):
+        your_blade.hover_comparison(d, d, labels=("only one",))
+
+
+# --- step 3 ------------------------------------------------------------------------------
+
+
+def test_both_readings_is_blade_stability_with_the_paper_directions_and_with_whole_spheres(base, mine, readings):
+    assert readings.labels == your_blade.LABELS and readings.readings == ("practical", "strict")
+    for label in readings.labels:
+        assert readings[label, "practical"].reading == "practical"
+        assert readings[label, "strict"].reading == "strict"
+    direct = rotorlyap.blade_stability(mine, 0.0, A=1.0, n_psi=4, n_sphere=32)
+    got = readings["variant", "strict"]
+    assert got.A == direct.A and np.array_equal(got.stable, direct.stable)
+    assert got.message == direct.message
+
+
+def test_readings_summary_has_one_aligned_line_per_blade_and_reading_with_the_engine_message(readings):
+    lines = readings.summary().splitlines()
+    assert [line[:27] for line in lines] == ["Table I neutral  practical:", "Table I neutral  strict   :",
+                                             "variant          practical:", "variant          strict   :"]
+    res = readings["variant", "strict"]
+    assert lines[3] == (f"variant          strict   : A = {res.A:.3f}, stable at {int(res.stable.sum()):2d}/4 "
+                        f"azimuths; {res.message}")
+
+
+def test_both_readings_needs_two_labels(base, mine):
+    with pytest.raises(ValueError, match="two blades"):
+        your_blade.both_readings(base, mine, labels=("a", "b", "c"))
+
+
+def test_worst_state_is_the_argmax_of_w_dot_in_units_of_the_scales(readings):
+    res = readings["variant", "strict"]
+    w = your_blade.worst_state(res)
+    assert w.psi == 0.0 and w.dW == res.max_dW[0]
+    assert np.allclose(w.state * res.scales, res.argmax_dW[0])
+    lines = w.summary().splitlines()
+    assert lines[0] == "worst state at psi = 0, in units of the scales a_i:"
+    assert lines[1].startswith("  beta ") and ", theta' " in lines[1]
+    assert lines[2] == f"  W' there = {res.max_dW[0]:.3g} J/rad"
+
+
+def test_worst_state_at_another_azimuth_states_it_in_degrees_and_refuses_a_missing_one(readings):
+    res = readings["variant", "strict"]
+    assert your_blade.worst_state(res, 1).summary().startswith("worst state at psi = 90 deg,")
+    with pytest.raises(IndexError):
+        your_blade.worst_state(res, 4)
+
+
+# --- step 4 ------------------------------------------------------------------------------
+
+
+def test_harmonic_data_stacks_the_harmonics_of_each_motion_in_order():
+    data = your_blade.harmonic_data([_fake_motion(0.05, 1.0), _fake_motion(0.1, 2.0)])
+    assert data.mu.tolist() == [0.05, 0.1]
+    assert data.harmonics_deg.shape == (2, 3, 3)
+    assert data.harmonics_deg[1, 2, 0] == pytest.approx(2.06)
+
+
+def test_harmonic_data_of_a_real_motion_is_its_harmonics_deg(mine):
+    pm = rotorlyap.periodic_motion(mine, 0.1)
+    data = your_blade.harmonic_data([pm])
+    assert np.array_equal(data.harmonics_deg[0], pm.harmonics_deg)
+    # forward flight tilts the disc: a first harmonic of flapping of at least a few tenths of a degree
+    assert np.hypot(*data.harmonics_deg[0, 0, 1:]) > 0.3
+
+
+def test_harmonic_data_needs_a_motion():
+    with pytest.raises(ValueError, match="at least one"):
+        your_blade.harmonic_data([])
+
+
+def test_harmonic_summary_prints_the_advance_ratios_and_per_hinge_triples_to_two_decimals():
+    data = your_blade.harmonic_data([_fake_motion(0.05, 1.0), _fake_motion(0.2, -3.004)])
+    assert data.summary().splitlines() == [
+        "mu: (0.05, 0.2)",
+        "flap  mean / cos / sin (deg): [[1.0, 1.01, 1.02], [-3.0, -2.99, -2.98]]",
+        "lag   mean / cos / sin (deg): [[1.03, 1.04, 1.05], [-2.97, -2.96, -2.95]]",
+        "pitch mean / cos / sin (deg): [[1.06, 1.07, 1.08], [-2.94, -2.93, -2.92]]",
+    ]
+
+
+def test_harmonic_csv_has_mu_then_mean_cos_sin_of_each_hinge_one_row_per_advance_ratio(tmp_path):
+    data = your_blade.harmonic_data([_fake_motion(0.05, 1.0), _fake_motion(0.1, 2.0)])
+    lines = figure_csv(data.export(), tmp_path / "h.csv").read_text().splitlines()
+    assert lines[0] == ("mu,flap_mean_deg,flap_cos_deg,flap_sin_deg,lag_mean_deg,lag_cos_deg,lag_sin_deg,"
+                        "pitch_mean_deg,pitch_cos_deg,pitch_sin_deg")
+    assert lines[1].split(",")[:3] == ["0.05", "1", "1.01"]
+    assert len(lines) == 3
+
+
+def test_plot_harmonics_returns_a_closed_figure_of_three_panels_with_three_lines_each():
+    data = your_blade.harmonic_data([_fake_motion(0.05, 1.0), _fake_motion(0.1, 2.0)])
+    before = plt.get_fignums()
+    fig = your_blade.plot_harmonics(data)
+    assert plt.get_fignums() == before  # closed: shown only where glued or saved
+    assert [ax.get_title() for ax in fig.axes] == ["flap angle", "lag angle", "pitch angle"]
+    assert all(len(ax.get_lines()) == 3 for ax in fig.axes)
+    assert np.allclose(fig.axes[1].get_lines()[0].get_ydata(), data.harmonics_deg[:, 1, 0])
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == ["mean", "1st cosine", "1st sine"]
