@@ -76,7 +76,7 @@ from ..methods.periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapu
 from ..methods.sampling import unit_sphere_points
 from ..model.blade import Blade
 from ..model.equations import sym3_matvec
-from ..model.steady import SteadyMotion, as_steady_motion
+from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
 from ..reporting import format_small
 
 __all__ = [
@@ -219,14 +219,9 @@ class EnergyFunction:
 
     # ------------------------------------------------------------------ public
     def f(self, psi: ArrayLike, x: ArrayLike) -> FloatArray:
-        """Disturbed right-hand side ``f(psi, x) = h(psi, xi + x) - xi'(psi)``, shape (..., 6)."""
-        b = self.blade
-
-        def kernel(psi_b, xc):
-            xi, dxi, _ = self._steady_block(psi_b)
-            return b.rhs_block(psi_b, xc + xi) - dxi
-
-        return b.blocks(psi, x, kernel, 6)
+        """Disturbed right-hand side ``f(psi, x) = h(psi, xi + x) - xi'(psi)``, shape (..., 6)
+        (:func:`rotorlyap.model.steady.disturbed_rhs`)."""
+        return disturbed_rhs(self.blade, self.steady)(psi, x)
 
     def W(self, psi: ArrayLike, x: ArrayLike) -> FloatArray:
         """Liapunov function ``W(psi, x)``, J, shape ``x.shape[:-1]`` (broadcast with psi)."""
@@ -512,11 +507,9 @@ class QuadraticFunction:
                 np.asarray(self.steady.dxi_function(psi), dtype=float))
 
     def f(self, psi, x) -> np.ndarray:
-        """Full nonlinear disturbed right-hand side ``h(psi, xi + x) - xi'(psi)``, shape of x."""
-        x = np.asarray(x, dtype=float)
-        psi = np.broadcast_to(np.asarray(psi, dtype=float), x.shape[:-1])
-        xi, dxi = self._steady(psi)
-        return self.blade.rhs(psi, xi + x) - dxi
+        """Full nonlinear disturbed right-hand side ``h(psi, xi + x) - xi'(psi)``, shape of x
+        (:func:`rotorlyap.model.steady.disturbed_rhs`)."""
+        return disturbed_rhs(self.blade, self.steady)(psi, x)
 
     def W(self, psi, x) -> np.ndarray:
         """``W = x^T P(psi) x``: ``x`` of shape ``(m, 6)``, ``psi`` broadcasting to ``(m,)``."""
