@@ -74,8 +74,9 @@ from ..errors import NotAsymptoticallyStableError
 from ..methods.floquet import floquet_multipliers
 from ..methods.periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
 from ..methods.sampling import unit_sphere_points
+from ..model import compiled
 from ..model.blade import Blade
-from ..model.equations import sym3_matvec
+from ..model.equations import flatten_states, sym3_matvec
 from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
 from ..reporting import format_small
 
@@ -241,7 +242,19 @@ class EnergyFunction:
 
         Analytic (generated code), no finite differences; shape ``x.shape[:-1]``.
         """
-        return self.blade.blocks(psi, x, self._dw_block, 1)[..., 0]
+        b = self.blade
+        if b.kernel is None:
+            return b.blocks(psi, x, self._dw_block, 1)[..., 0]
+        pf, xf, shape = flatten_states(psi, x)
+        constant = self.steady.is_constant
+        if constant and not b.has_cyclic:
+            xi, dxi, ps = self.steady.state[None], np.zeros((1, 6)), self._steady_block(pf[:1])[2].T
+        else:  # xi, xi' and the potential terms once per distinct azimuth (searches repeat each)
+            pu, inverse = np.unique(pf, return_inverse=True)
+            xi_u, dxi_u = (np.broadcast_to(a, (pu.size, 6)) for a in self.steady_at(pu))
+            ps = b.potential_terms(pu, np.ascontiguousarray(xi_u[:, :3].T)).T[inverse]
+            xi, dxi = (xi_u[:1], dxi_u[:1]) if constant else (xi_u[inverse], dxi_u[inverse])
+        return compiled.energy_rate(b, b.kernel, pf, xf, xi, dxi, ps, constant).reshape(shape)
 
     def _dw_block(self, psi: FloatArray, xc: FloatArray) -> FloatArray:
         """W' for one block of disturbed states ``xc`` (6, n)."""

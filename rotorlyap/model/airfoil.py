@@ -350,6 +350,20 @@ class Airfoil:
         else:
             object.__setattr__(self, "_table", ())
 
+    def table_arrays(self) -> NDArray[np.float64] | None:
+        """The table of :meth:`coefficients` as one array, or None with ``table_size = 0``.
+
+        Returns
+        -------
+        numpy.ndarray, shape (6, table_size) or None
+            Rows: values and increments of cl, cd and cm on the grid
+            ``-pi + 2 pi k / table_size`` (the compiled kernels of
+            :mod:`rotorlyap.model.compiled` interpolate in it).
+        """
+        if not self._table:
+            return None
+        return np.ascontiguousarray(np.stack([a for pair in self._table for a in pair]))
+
     @property
     def reverse_cl_max(self) -> float:
         """Largest lift coefficient of the reverse-flow branch (at its stall), -."""

@@ -34,6 +34,9 @@ from dataclasses import replace
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .compiled import kernel_data
+from .compiled import potential_terms as compiled_potential_terms
+from .compiled import rhs as compiled_rhs
 from ._generated import blade_model as _gen
 from .aero import StripAerodynamics
 from .mass import mass_properties
@@ -123,6 +126,9 @@ class BladeEquations:
         Aerodynamic station radii (m, at zero hinge angles), shape ``(n_stations,)``.
     parameter_values : tuple of float
         The parameters of the generated code, in the order of its ``PARAMETER_NAMES``.
+    kernel : rotorlyap.model.compiled.KernelData or None
+        The data of the compiled kernels (:mod:`rotorlyap.model.compiled`), or None where the
+        numpy kernels run.
     """
 
     def __init__(self, params: BladeParameters, mu: float = 0.0):
@@ -141,6 +147,7 @@ class BladeEquations:
         self.r = self.aero.r
         self.r_over_R = self.aero.r_over_R
         self.weights = self.aero.weights
+        self.kernel = kernel_data(self)
 
     def with_collective(self, collective: float) -> "BladeEquations":
         """A copy with another collective (shares the precomputed data)."""
@@ -242,7 +249,15 @@ class BladeEquations:
         numpy.ndarray, shape (..., 6)
             ``z'``: rates (rad/rad) and accelerations ``q''`` (rad/rad^2).
         """
-        return self.blocks(psi, z, self.rhs_block, 6)
+        if self.kernel is None:
+            return self.blocks(psi, z, self.rhs_block, 6)
+        z = np.asarray(z, dtype=np.float64)
+        if z.ndim <= 2 and z.shape[-1:] == (6,) and np.ndim(psi) == 0:  # the common case, fast
+            zf = z.reshape(-1, 6)
+            out = compiled_rhs(self, self.kernel, np.full(zf.shape[0], float(psi)), zf)
+            return out.reshape(z.shape)
+        pf, zf, shape = flatten_states(psi, z)
+        return compiled_rhs(self, self.kernel, pf, zf).reshape(shape + (6,))
 
     def generalised_forces(self, psi: ArrayLike, z: ArrayLike) -> dict[str, FloatArray]:
         """Generalised forces on the three hinges, by kind, N m, each of shape (..., 3).
@@ -375,7 +390,13 @@ class BladeEquations:
         Without cyclic pitch the control input is the scalar collective and ``psi`` is ignored.
         """
         thc = self.pitch_control(psi) if self.has_cyclic else self.params.collective
-        return _gen.potential_terms(q[0], q[1], q[2], thc, self.parameter_values)
+        if self.kernel is None or np.ndim(q) != 2:
+            return _gen.potential_terms(q[0], q[1], q[2], thc, self.parameter_values)
+        q = np.asarray(q, dtype=np.float64)
+        psi = np.asarray(psi if self.has_cyclic else 0.0, dtype=np.float64)
+        shape = np.broadcast_shapes(psi.shape, q.shape[1:])
+        q = np.broadcast_to(q, (3,) + shape)
+        return compiled_potential_terms(self, self.kernel, np.broadcast_to(psi, shape), q.T).T
 
     # ------------------------------------------------------------------ energy kernels
     def energy_terms(self, q, x_rates, theta_c):

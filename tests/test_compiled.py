@@ -1,0 +1,122 @@
+"""The compiled kernels (rotorlyap.model.compiled) against the numpy path.
+
+Fact checked: both paths evaluate the same formulas (the generated code of one derivation and
+the same strip loads), so they agree to round-off, about 1e-15 relative to the size of each
+quantity; the test allows 1e-13. The numpy path is the reference: it is the one the physics
+tests of tests/test_blade.py and tests/test_derivation.py check against closed forms.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from rotorlyap.analysis.functions import energy_function
+from rotorlyap.model import compiled
+from rotorlyap.model.airfoil import LinearAirfoil
+from rotorlyap.model.blade import Blade
+from rotorlyap.model.parameters import BladeParameters
+from rotorlyap.model.steady import periodic_motion, tabulate_motion
+
+pytestmark = pytest.mark.skipif(not compiled.numba_available(), reason="numba is not installed")
+
+RTOL = 1e-13
+
+
+def _pair(monkeypatch, params, mu):
+    """The same blade twice: compiled kernels and numpy kernels."""
+    monkeypatch.setenv("ROTORLYAP_KERNEL", "compiled")
+    fast = Blade(params, mu)
+    monkeypatch.setenv("ROTORLYAP_KERNEL", "numpy")
+    slow = Blade(params, mu)
+    monkeypatch.delenv("ROTORLYAP_KERNEL")
+    assert fast.kernel is not None and slow.kernel is None
+    return fast, slow
+
+
+def _states(rng, n, spread):
+    """Disturbed states about a typical hover trim, and azimuths over the whole circle."""
+    z = np.array([0.05, 0.02, 0.1, 0.0, 0.0, 0.0]) + rng.normal(scale=spread, size=(n, 6))
+    return rng.uniform(0.0, 2.0 * np.pi, n), z
+
+
+def _close(a, b):
+    """Equal to RTOL relative to each column's largest magnitude (round-off is relative to the
+    size of the terms, not of a result that cancels to near zero)."""
+    scale = np.max(np.abs(b), axis=0, keepdims=True)
+    assert a.shape == b.shape
+    excess = np.abs(a - b) / (RTOL * scale + 1e-300)
+    assert excess.max() <= 1.0, f"differs by {excess.max():.1f} x {RTOL} of the column's size"
+
+
+CASES = [
+    ("hover, Table I forward C.G.", {}, 0.0),
+    ("forward flight, cyclic and twist", {"cyclic_cos": 0.02, "cyclic_sin": -0.05, "twist": -0.1}, 0.3),
+    ("vacuum (no air loads)", {"air_density": 0.0, "collective": 0.1}, 0.0),
+    ("no pitch damping, backward C.G.", {"cm_pitch_rate": 0.0}, 0.15),
+]
+
+
+@pytest.mark.parametrize("label, changes, mu", CASES, ids=[c[0] for c in CASES])
+def test_rhs_equals_numpy_path(monkeypatch, label, changes, mu):
+    """h(psi, z) of the compiled kernel equals the numpy path to 1e-13 relative, small and large
+    disturbances (large ones reach reverse flow and stall: every branch of the airfoil table)."""
+    base = BladeParameters.table_i("backward" if "backward" in label else "forward")
+    fast, slow = _pair(monkeypatch, replace(base, **changes), mu)
+    rng = np.random.default_rng(1)
+    for spread in (0.01, 0.5, 3.0):
+        psi, z = _states(rng, 2000, spread)
+        _close(fast.rhs(psi, z), slow.rhs(psi, z))
+    # the shapes of the public API: one state, a scalar azimuth, leading axes
+    psi, z = _states(rng, 12, 0.1)
+    _close(fast.rhs(0.7, z[0]), slow.rhs(0.7, z[0]))
+    assert fast.rhs(0.7, z[0]).shape == (6,)
+    assert fast.rhs(psi.reshape(3, 4), z.reshape(3, 4, 6)).shape == (3, 4, 6)
+    _close(fast.rhs(psi.reshape(3, 4), z.reshape(3, 4, 6)).reshape(-1, 6), slow.rhs(psi, z))
+
+
+def test_potential_terms_equal_numpy_path(monkeypatch):
+    """The effective potential and its derivatives (14 rows) agree with the numpy path."""
+    params = replace(BladeParameters.table_i("neutral"), cyclic_cos=0.03, cyclic_sin=0.01)
+    fast, slow = _pair(monkeypatch, params, 0.2)
+    rng = np.random.default_rng(2)
+    psi, z = _states(rng, 500, 0.3)
+    _close(fast.potential_terms(psi, z[:, :3].T).T, slow.potential_terms(psi, z[:, :3].T).T)
+
+
+@pytest.mark.parametrize("steady", ["hover", "cyclic", "periodic"])
+def test_energy_rate_equals_numpy_path(monkeypatch, steady):
+    """W' of the energy function agrees with the numpy path: about the hover equilibrium, about a
+    constant state with cyclic pitch (psi-dependent control), and about a periodic motion."""
+    params = BladeParameters.table_i("forward")
+    if steady == "cyclic":
+        params = replace(params, cyclic_cos=0.02, cyclic_sin=-0.04, collective=0.15)
+    mu = 0.0 if steady == "hover" else 0.15
+    fast, slow = _pair(monkeypatch, params, mu)
+    if steady == "periodic":
+        xi = tabulate_motion(periodic_motion(params, mu, n_points=32))
+    else:
+        xi = fast.equilibrium() if steady == "hover" else np.array([0.05, 0.01, 0.15, 0, 0, 0])
+    rng = np.random.default_rng(3)
+    psi = np.repeat(np.linspace(0.0, 2.0 * np.pi, 24, endpoint=False), 50)
+    x = rng.normal(scale=0.1, size=(psi.size, 6))
+    a, b = energy_function(fast, xi), energy_function(slow, xi)
+    _close(a.dW(psi, x)[:, None], b.dW(psi, x)[:, None])
+    _close(a.W(psi, x)[:, None], b.W(psi, x)[:, None])
+
+
+def test_kernel_mode_rejects_unknown_values(monkeypatch):
+    """A clear error names the variable and the allowed values."""
+    monkeypatch.setenv("ROTORLYAP_KERNEL", "fortran")
+    with pytest.raises(ValueError, match=r"ROTORLYAP_KERNEL must be one of \('compiled', 'numpy'\)"):
+        Blade(BladeParameters.table_i("forward"), 0.0)
+
+
+def test_untabulated_airfoils_use_the_numpy_path(monkeypatch):
+    """An airfoil without a table (LinearAirfoil) has no compiled kernel: the numpy path runs."""
+    monkeypatch.setenv("ROTORLYAP_KERNEL", "compiled")
+    blade = Blade(replace(BladeParameters.table_i("forward"), airfoil=LinearAirfoil()), 0.0)
+    assert blade.kernel is None
+    assert np.isfinite(blade.rhs(0.0, blade.equilibrium())).all()
