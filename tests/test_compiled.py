@@ -14,13 +14,13 @@ import numpy as np
 import pytest
 
 from rotorlyap.analysis.functions import energy_function
-from rotorlyap.model import compiled
+from rotorlyap.jit import numba_available
 from rotorlyap.model.airfoil import LinearAirfoil
 from rotorlyap.model.blade import Blade
 from rotorlyap.model.parameters import BladeParameters
 from rotorlyap.model.steady import periodic_motion, tabulate_motion
 
-pytestmark = pytest.mark.skipif(not compiled.numba_available(), reason="numba is not installed")
+pytestmark = pytest.mark.skipif(not numba_available(), reason="numba is not installed")
 
 RTOL = 1e-13
 

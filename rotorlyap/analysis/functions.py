@@ -530,7 +530,7 @@ class QuadraticFunction:
         psi = np.broadcast_to(np.asarray(psi, dtype=float), y.shape[:1])
         if self.constant:
             return np.einsum("mi,ij,mj->m", y, self.solution.P_grid[0], y)
-        return np.einsum("mi,mij,mj->m", y, self.solution.P(psi), y)
+        return self.solution.W(psi, y)
 
     def dW(self, psi, x) -> np.ndarray:
         """``W' = x^T P' x + 2 x^T P f(psi, x)`` with the full nonlinear ``f``, shape ``(m,)``."""
@@ -540,8 +540,7 @@ class QuadraticFunction:
         fy = self.f(psi, x) / self.scales
         if self.constant:
             return 2.0 * np.einsum("mi,ij,mj->m", y, self.solution.P_grid[0], fy)
-        return (np.einsum("mi,mij,mj->m", y, self.solution.dP(psi), y)
-                + 2.0 * np.einsum("mi,mij,mj->m", y, self.solution.P(psi), fy))
+        return self.solution.dW(psi, y, fy)
 
     def dW_linear(self, psi, x) -> np.ndarray:
         """``W'`` along the linearised motion ``x' = J x`` (``-x^T Q x`` up to the residual)."""

@@ -58,6 +58,7 @@ For a constant array ``A`` the solution is constant and exact:
 
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass
 
@@ -82,6 +83,7 @@ from .floquet import (
     floquet_multipliers,
 )
 from ..errors import NotAsymptoticallyStableError
+from ..jit import jit, use_compiled
 from ..reporting import format_small
 
 __all__ = ["INTERPOLATIONS", "PeriodicLyapunovSolution", "periodic_lyapunov"]
@@ -142,6 +144,51 @@ def _hermite(P_grid: np.ndarray, D_grid: np.ndarray, period: float, psi,
 
 def _symmetric(X: np.ndarray) -> np.ndarray:
     return 0.5 * (X + np.swapaxes(X, -1, -2))
+
+
+@jit
+def _hermite_forms(psi, x, xdot, P_grid, D_grid, period, with_rate, w, dw):
+    """``w = x^T P x`` and (``with_rate``) ``dw = x^T P' x + 2 x^T P xdot`` with ``P`` the
+    symmetrised periodic cubic Hermite interpolant of :func:`_hermite`, one state at a time
+    (no ``(m, n, n)`` array of matrices)."""
+    N = P_grid.shape[0]
+    n = x.shape[1]
+    h = period / N
+    for i in range(x.shape[0]):
+        u = (psi[i] % period) / h
+        j = min(int(math.floor(u)), N - 1)
+        t = u - j
+        j1 = (j + 1) % N
+        t2 = t * t
+        t3 = t2 * t
+        a0 = 2 * t3 - 3 * t2 + 1
+        b0 = (t3 - 2 * t2 + t) * h
+        a1 = -2 * t3 + 3 * t2
+        b1 = (t3 - t2) * h
+        da0 = (6 * t2 - 6 * t) / h
+        db0 = 3 * t2 - 4 * t + 1
+        da1 = (-6 * t2 + 6 * t) / h
+        db1 = 3 * t2 - 2 * t
+        acc = 0.0
+        acc_d = 0.0
+        for r in range(n):
+            for c in range(n):
+                p_rc = (a0 * P_grid[j, r, c] + b0 * D_grid[j, r, c]
+                        + a1 * P_grid[j1, r, c] + b1 * D_grid[j1, r, c])
+                p_cr = (a0 * P_grid[j, c, r] + b0 * D_grid[j, c, r]
+                        + a1 * P_grid[j1, c, r] + b1 * D_grid[j1, c, r])
+                p_sym = 0.5 * (p_rc + p_cr)
+                acc += x[i, r] * p_sym * x[i, c]
+                if with_rate:
+                    d_rc = (da0 * P_grid[j, r, c] + db0 * D_grid[j, r, c]
+                            + da1 * P_grid[j1, r, c] + db1 * D_grid[j1, r, c])
+                    d_cr = (da0 * P_grid[j, c, r] + db0 * D_grid[j, c, r]
+                            + da1 * P_grid[j1, c, r] + db1 * D_grid[j1, c, r])
+                    acc_d += x[i, r] * (0.5 * (d_rc + d_cr)) * x[i, c] \
+                        + 2.0 * x[i, r] * p_sym * xdot[i, c]
+        w[i] = acc
+        if with_rate:
+            dw[i] = acc_d
 
 
 # --------------------------------------------------------------------------------------
@@ -260,6 +307,8 @@ class PeriodicLyapunovSolution:
         broadcasting to ``(m,)``; returns ``(m,)``."""
         x = self._states(x)
         psi = np.broadcast_to(np.asarray(psi, dtype=float), (x.shape[0],))
+        if self.interpolation == "hermite" and use_compiled():
+            return self._forms(psi, x, None)[0]
         return np.einsum("mi,mij,mj->m", x, self.P(psi), x)
 
     def dW(self, psi, x, xdot) -> np.ndarray:
@@ -276,8 +325,22 @@ class PeriodicLyapunovSolution:
         if xdot.shape != x.shape:
             raise ValueError(f"xdot must have the shape of x, {x.shape}; got {xdot.shape}")
         psi = np.broadcast_to(np.asarray(psi, dtype=float), (x.shape[0],))
+        if self.interpolation == "hermite" and use_compiled():
+            return self._forms(psi, x, xdot)[1]
         return (np.einsum("mi,mij,mj->m", x, self.dP(psi), x)
                 + 2.0 * np.einsum("mi,mij,mj->m", x, self.P(psi), xdot))
+
+    def _forms(self, psi, x, xdot):
+        """``W`` and ``W'`` by the compiled kernel (hermite interpolation only)."""
+        if not np.all(np.isfinite(psi)):
+            raise ValueError("psi must be finite")
+        m = x.shape[0]
+        w, dw = np.empty(m), np.empty(m)
+        with_rate = xdot is not None
+        c = np.ascontiguousarray
+        _hermite_forms(c(psi), c(x), c(xdot) if with_rate else c(x), self.P_grid, self.dP_grid,
+                       float(self.period), with_rate, w, dw)
+        return w, dw
 
     def _states(self, x) -> np.ndarray:
         x = np.asarray(x, dtype=float)

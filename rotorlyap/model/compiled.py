@@ -19,56 +19,29 @@ the numpy path) and the ``sin``/``cos``/``atan2`` of the C library instead of nu
 
 Which path runs
 ---------------
-:func:`kernel_mode` reads the environment variable ``ROTORLYAP_KERNEL``: ``"compiled"``
-(default) uses these kernels wherever they apply, ``"numpy"`` never. They apply to blades
-whose airfoil is tabulated (:class:`rotorlyap.model.airfoil.Airfoil` with
-``table_size > 0``, the default); other airfoils use the numpy path. Without numba installed
-the numpy path runs everywhere.
+:func:`rotorlyap.jit.use_compiled` (the environment variable ``ROTORLYAP_KERNEL``) at the
+construction of a blade's equations; the kernels apply to blades whose airfoil is tabulated
+(:class:`rotorlyap.model.airfoil.Airfoil` with ``table_size > 0``, the default); other
+airfoils use the numpy path.
 """
 
 from __future__ import annotations
 
 import math
-import os
+
 import numpy as np
 from numpy.typing import NDArray
 
+from ..jit import PARALLEL_MIN_STATES, jit_parallel, prange, threads, use_compiled
+from ..jit import jit as _jit
 from ._generated import blade_scalar as _scalar
 
-__all__ = ["KERNEL_MODES", "KernelData", "kernel_mode", "numba_available", "kernel_data",
-           "rhs", "potential_terms", "energy_rate"]
+__all__ = ["KernelData", "kernel_data", "rhs", "potential_terms", "energy_rate"]
 
 FloatArray = NDArray[np.float64]
 BladeEquations = object
 """Stands for :class:`rotorlyap.model.equations.BladeEquations` in the annotations (this module
 is imported by that one, so it does not import it back)."""
-
-KERNEL_MODES = ("compiled", "numpy")
-"""Allowed values of the environment variable ``ROTORLYAP_KERNEL``."""
-
-try:  # numba is a dependency (requirements.txt); the numpy path stays complete without it
-    import numba as _numba
-except ImportError:  # pragma: no cover - exercised only without numba
-    _numba = None
-
-
-def numba_available() -> bool:
-    """True if numba can be imported."""
-    return _numba is not None
-
-
-def kernel_mode() -> str:
-    """The kernel path asked for by ``ROTORLYAP_KERNEL`` (default ``"compiled"``).
-
-    Raises
-    ------
-    ValueError
-        If the variable holds anything but ``"compiled"`` or ``"numpy"``.
-    """
-    mode = os.environ.get("ROTORLYAP_KERNEL", "compiled").strip().lower() or "compiled"
-    if mode not in KERNEL_MODES:
-        raise ValueError(f"ROTORLYAP_KERNEL must be one of {KERNEL_MODES}, got {mode!r}")
-    return mode
 
 
 # --------------------------------------------------------------------------------------
@@ -122,7 +95,7 @@ class KernelData:
 def kernel_data(eq: BladeEquations) -> KernelData | None:
     """The kernel data of ``eq``, or None where the numpy path must run (``ROTORLYAP_KERNEL=numpy``,
     numba missing, or an airfoil without a table)."""
-    if kernel_mode() != "compiled" or _numba is None:
+    if not use_compiled():
         return None
     table_arrays = getattr(eq.params.airfoil, "table_arrays", None)
     if table_arrays is None or table_arrays() is None:
@@ -138,12 +111,6 @@ def _controls(eq: BladeEquations) -> FloatArray:
 # --------------------------------------------------------------------------------------
 # The kernels (pure Python, compiled by numba when it is installed)
 # --------------------------------------------------------------------------------------
-
-def _jit(fn):
-    if _numba is None:  # pragma: no cover
-        return fn
-    return _numba.njit(cache=True, nogil=True)(fn)
-
 
 _rhs_terms_into = _jit(_scalar.rhs_terms_into)
 _rhs_dw_terms_into = _jit(_scalar.rhs_dw_terms_into)
@@ -251,12 +218,12 @@ def _accelerations(psi, z3, z4, z5, T, sc, st, tab, acc):
 
 
 @_jit
-def _rhs_kernel(psi, z, ctrl, P, sc, st, tab, out):
-    """``out[i] = h(psi[i], z[i])`` for flat ``psi`` (n,) and ``z`` (n, 6)."""
+def _rhs_range(psi, z, ctrl, P, sc, st, tab, out, start, stop):
+    """``out[i] = h(psi[i], z[i])`` for ``i`` in ``[start, stop)``; ``psi`` (n,), ``z`` (n, 6)."""
     T = np.empty(42)
     acc = np.empty(3)
     cyclic = sc[_CYCLIC] != 0.0
-    for i in range(z.shape[0]):
+    for i in range(start, stop):
         ps = psi[i]
         _rhs_terms_into(z[i, 0], z[i, 1], z[i, 2], z[i, 3], z[i, 4], z[i, 5],
                         _pitch(ps, ctrl, cyclic), P, T)
@@ -269,6 +236,13 @@ def _rhs_kernel(psi, z, ctrl, P, sc, st, tab, out):
         out[i, 5] = acc[2]
 
 
+@jit_parallel
+def _rhs_parallel(psi, z, ctrl, P, sc, st, tab, out, n_chunks):
+    n = z.shape[0]
+    for c in prange(n_chunks):
+        _rhs_range(psi, z, ctrl, P, sc, st, tab, out, c * n // n_chunks, (c + 1) * n // n_chunks)
+
+
 @_jit
 def _potential_kernel(psi, q, ctrl, P, cyclic, out):
     """``out[i]`` = the generated ``potential_terms`` at ``psi[i]`` and hinge angles ``q[i]``."""
@@ -277,8 +251,9 @@ def _potential_kernel(psi, q, ctrl, P, cyclic, out):
 
 
 @_jit
-def _energy_rate_kernel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out):
-    """The energy function's ``W'`` (rotorlyap.analysis.functions.EnergyFunction._dw_block).
+def _energy_rate_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, start, stop):
+    """The energy function's ``W'`` (rotorlyap.analysis.functions.EnergyFunction._dw_block)
+    for the states ``[start, stop)``.
 
     ``xi``, ``dxi`` (m, 6) and ``ps`` (m', 14) hold one row (a constant steady motion; ``ps``
     without cyclic pitch) or one row per state.
@@ -290,7 +265,7 @@ def _energy_rate_kernel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out
     om2 = om * om
     one = xi.shape[0] == 1
     one_ps = ps.shape[0] == 1
-    for i in range(x.shape[0]):
+    for i in range(start, stop):
         j = 0 if one else i
         k = 0 if one_ps else i
         p_i = psi[i]
@@ -327,16 +302,36 @@ def _energy_rate_kernel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out
         out[i] = dW
 
 
+@jit_parallel
+def _energy_rate_parallel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, n_chunks):
+    n = x.shape[0]
+    for c in prange(n_chunks):
+        _energy_rate_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out,
+                           c * n // n_chunks, (c + 1) * n // n_chunks)
+
+
+def _chunks(n: int) -> int:
+    """Chunks of a batch of ``n`` states: 0 (one thread) below PARALLEL_MIN_STATES."""
+    k = threads()
+    return 0 if n < PARALLEL_MIN_STATES or k < 2 else 4 * k
+
+
 # --------------------------------------------------------------------------------------
 # Entry points
 # --------------------------------------------------------------------------------------
 
 def rhs(eq: BladeEquations, data: KernelData, psi: FloatArray, z: FloatArray) -> FloatArray:
     """``h(psi, z)`` for flat ``psi`` (n,) and ``z`` (n, 6), shape (n, 6)."""
-    out = np.empty((z.shape[0], 6))
-    _rhs_kernel(psi if psi.flags.c_contiguous else np.ascontiguousarray(psi),
-                z if z.flags.c_contiguous else np.ascontiguousarray(z),
-                _controls(eq), data.P, data.scalars, data.stations, data.table, out)
+    n = z.shape[0]
+    out = np.empty((n, 6))
+    args = (psi if psi.flags.c_contiguous else np.ascontiguousarray(psi),
+            z if z.flags.c_contiguous else np.ascontiguousarray(z),
+            _controls(eq), data.P, data.scalars, data.stations, data.table, out)
+    chunks = _chunks(n)
+    if chunks:
+        _rhs_parallel(*args, chunks)
+    else:
+        _rhs_range(*args, 0, n)
     return out
 
 
@@ -355,9 +350,15 @@ def energy_rate(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatA
     """The energy function's ``W'`` (J/rad) for flat ``psi`` (n,) and disturbances ``x`` (n, 6);
     ``xi``, ``dxi`` (1 or n, 6) the steady motion and its rate, ``ps`` (1 or n, 14) the
     generated ``potential_terms`` at its hinge angles."""
-    out = np.empty(x.shape[0])
+    n = x.shape[0]
+    out = np.empty(n)
     c = np.ascontiguousarray
-    _energy_rate_kernel(c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
-                        c(dxi, dtype=np.float64), c(ps, dtype=np.float64), _controls(eq), data.P,
-                        data.scalars, data.stations, data.table, bool(constant), out)
+    args = (c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
+            c(dxi, dtype=np.float64), c(ps, dtype=np.float64), _controls(eq), data.P,
+            data.scalars, data.stations, data.table, bool(constant), out)
+    chunks = _chunks(n)
+    if chunks:
+        _energy_rate_parallel(*args, chunks)
+    else:
+        _energy_rate_range(*args, 0, n)
     return out

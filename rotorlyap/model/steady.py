@@ -30,6 +30,7 @@ for fast evaluation in large batches.
 from __future__ import annotations
 
 import dataclasses
+import math
 from dataclasses import dataclass
 from typing import Callable
 
@@ -37,6 +38,7 @@ import numpy as np
 
 from ..conventions import TWO_PI
 from ..errors import PeriodicMotionError
+from ..jit import jit, use_compiled
 from .blade import Blade
 from .parameters import BladeParameters
 
@@ -440,6 +442,32 @@ def periodic_motion(
 # --------------------------------------------------------------------------------------
 
 
+@jit
+def _hermite_rows(psi, values, slopes, derivative, out):
+    """:meth:`TabulatedMotion._eval`, one azimuth at a time (the same operations in the same
+    order, so the same numbers)."""
+    n = values.shape[0]
+    h = TWO_PI / n
+    for i in range(psi.shape[0]):
+        u = (psi[i] % TWO_PI) / h
+        j = min(int(math.floor(u)), n - 1)
+        t = u - j
+        j1 = (j + 1) % n
+        t2 = t * t
+        t3 = t2 * t
+        for c in range(values.shape[1]):
+            P0 = values[j, c]
+            P1 = values[j1, c]
+            D0 = h * slopes[j, c]
+            D1 = h * slopes[j1, c]
+            if derivative:
+                out[i, c] = ((6 * t2 - 6 * t) * (P0 - P1) + (3 * t2 - 4 * t + 1) * D0
+                             + (3 * t2 - 2 * t) * D1) / h
+            else:
+                out[i, c] = ((2 * t3 - 3 * t2 + 1) * P0 + (t3 - 2 * t2 + t) * D0
+                             + (-2 * t3 + 3 * t2) * P1 + (t3 - t2) * D1)
+
+
 @dataclass(frozen=True)
 class TabulatedMotion:
     """A periodic steady motion as a piecewise cubic Hermite interpolant: fast to evaluate.
@@ -469,6 +497,11 @@ class TabulatedMotion:
 
     def _eval(self, psi, derivative: bool) -> np.ndarray:
         psi = np.asarray(psi, dtype=float)
+        if psi.size > 1 and use_compiled():
+            out = np.empty((psi.size, 6))
+            _hermite_rows(np.ascontiguousarray(psi.reshape(-1)), self.values, self.slopes,
+                          derivative, out)
+            return out.reshape(psi.shape + (6,))
         n = self.values.shape[0]
         h = TWO_PI / n
         u = np.mod(psi, TWO_PI) / h

@@ -1,0 +1,85 @@
+"""Compilation of the package's numeric kernels: numba when it is installed and asked for.
+
+The kernels of the blade model (:mod:`rotorlyap.model.compiled`), of the periodic Liapunov
+function (:mod:`rotorlyap.methods.periodic_lyapunov`) and of the tabulated steady motion
+(:mod:`rotorlyap.model.steady`) are plain Python loops over states, written so that numba
+compiles them to machine code (``nopython`` mode, cached on disk in ``__pycache__`` beside
+each module: only the first use on a machine compiles, a few seconds). Every kernel has a
+numpy twin that computes the same formulas, the reference of the tests. Kernels over large
+batches of independent states run on every core (:func:`jit_parallel`); each state is
+computed alone, so the numbers do not depend on the number of threads.
+
+Which path runs
+---------------
+The environment variable ``ROTORLYAP_KERNEL`` chooses, when the package is imported:
+``"compiled"`` (default) runs the compiled kernels, ``"numpy"`` the numpy path everywhere
+(for comparison, or on a machine where numba does not install). Without numba the numpy
+path runs whatever the variable says.
+"""
+
+from __future__ import annotations
+
+import os
+
+__all__ = ["KERNEL_MODES", "PARALLEL_MIN_STATES", "jit", "jit_parallel", "kernel_mode",
+           "numba_available", "prange", "threads", "use_compiled"]
+
+KERNEL_MODES = ("compiled", "numpy")
+"""Allowed values of the environment variable ``ROTORLYAP_KERNEL``."""
+
+try:  # numba is a dependency (requirements.txt); the numpy path stays complete without it
+    import numba as _numba
+    from numba import prange
+except ImportError:  # pragma: no cover - exercised only without numba
+    _numba = None
+    prange = range
+
+PARALLEL_MIN_STATES = 2048
+"""Batches of at least this many states are split over the threads (:func:`jit_parallel`);
+smaller ones run on one thread, where starting the threads would cost more than it saves."""
+
+
+def numba_available() -> bool:
+    """True if numba can be imported."""
+    return _numba is not None
+
+
+def kernel_mode() -> str:
+    """The kernel path asked for by ``ROTORLYAP_KERNEL`` (default ``"compiled"``).
+
+    Raises
+    ------
+    ValueError
+        If the variable holds anything but ``"compiled"`` or ``"numpy"``.
+    """
+    mode = os.environ.get("ROTORLYAP_KERNEL", "compiled").strip().lower() or "compiled"
+    if mode not in KERNEL_MODES:
+        raise ValueError(f"ROTORLYAP_KERNEL must be one of {KERNEL_MODES}, got {mode!r}")
+    return mode
+
+
+def use_compiled() -> bool:
+    """True if the compiled kernels run: numba is installed and ``ROTORLYAP_KERNEL`` allows it."""
+    return _numba is not None and kernel_mode() == "compiled"
+
+
+def jit(fn):
+    """Compile ``fn`` with numba (``nopython``, cached on disk, releasing the GIL), or return
+    it unchanged when numba is not installed."""
+    if _numba is None:  # pragma: no cover
+        return fn
+    return _numba.njit(cache=True, nogil=True)(fn)
+
+
+def jit_parallel(fn):
+    """Compile ``fn``, whose outer loop is a ``prange``, for all threads (numba's ``parallel``
+    option; the number of threads is numba's, ``NUMBA_NUM_THREADS`` sets it), or return it
+    unchanged (a serial loop) when numba is not installed."""
+    if _numba is None:  # pragma: no cover
+        return fn
+    return _numba.njit(cache=True, nogil=True, parallel=True)(fn)
+
+
+def threads() -> int:
+    """Threads of the parallel kernels (1 without numba)."""
+    return 1 if _numba is None else int(_numba.get_num_threads())
