@@ -7,12 +7,18 @@ explains the design.
    cell ran, none raised) is stored, with its fresh outputs, in the book build's notebook
    cache, so that ``jupyter-book build`` renders it without executing it again. Under
    pytest-xdist each worker hands its notebooks to the controller, which stores them.
+3. **One BLAS thread per worker**: with several xdist workers, each worker and the notebook
+   kernels it starts use one OpenBLAS/OpenMP thread (unless the environment already says how
+   many): the workers already fill the cores, and BLAS threads waiting for a busy core cost
+   more than they save. The numbers do not depend on it (a committed output prints only the
+   digits that survive another BLAS, "What a committed output may print" in the README).
 """
 
 from __future__ import annotations
 
 import copy
 import json
+import os
 import sys
 from pathlib import Path
 
@@ -22,6 +28,15 @@ sys.path.insert(0, str(Path(__file__).resolve().parent / "book" / "_ext"))
 import notebook_execution  # noqa: E402
 
 _WORKER_KEY = "rotorlyap_executed_notebooks"
+_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def pytest_configure(config):
+    """Point 3: one BLAS thread per xdist worker (set before the workers start)."""
+    workers = getattr(config.option, "numprocesses", None)
+    if workers not in (None, 0, "0") and not hasattr(config, "workerinput"):
+        for name in _THREAD_VARIABLES:
+            os.environ.setdefault(name, "1")
 
 
 def _nbval_cell_class():

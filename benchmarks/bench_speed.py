@@ -67,6 +67,16 @@ def _with_mode(mode: str):
     os.environ["ROTORLYAP_KERNEL"] = mode
 
 
+def _set_threads(k: int | None) -> None:
+    """Threads of the compiled kernels: ``k``, or every core for None."""
+    from rotorlyap.jit import numba_available
+
+    if numba_available():
+        import numba
+
+        numba.set_num_threads(numba.config.NUMBA_NUM_THREADS if k is None else k)
+
+
 # --------------------------------------------------------------------------------------
 # Operation counts
 # --------------------------------------------------------------------------------------
@@ -144,8 +154,9 @@ def kernels(batches) -> dict:
     x = rng.normal(scale=0.02, size=(n_max, 6))
     psi = rng.uniform(0.0, 2.0 * np.pi, n_max)
     rates = {}
-    for mode in ("numpy", "compiled"):
-        _with_mode(mode)
+    for mode in ("numpy", "compiled", "compiled, all cores"):
+        _with_mode(mode.split(",")[0])
+        _set_threads(None if "all" in mode else 1)
         hover = Blade(params, 0.0)
         forward = Blade(params, 0.15)
         xi = hover.equilibrium()
@@ -214,25 +225,32 @@ def main(argv=None) -> int:
     from rotorlyap.model.parameters import BladeParameters
 
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, numba available: {numba_available()}, "
-          f"1 thread")
+          "numerics on one thread unless said")
     rates = kernels(batches)
     print("\n1. states per second (median of repeated calls)")
-    head = f"{'kernel':38s} {'batch':>8s} {'numpy':>12s} {'compiled':>12s} {'speed-up':>9s}"
+    from rotorlyap.jit import PARALLEL_MIN_STATES
+
+    print(f"(numpy and compiled: one thread; all cores: {os.cpu_count()} here, for batches of "
+          f">= {PARALLEL_MIN_STATES} states)")
+    head = (f"{'kernel':36s} {'batch':>8s} {'numpy':>11s} {'compiled':>11s} {'speed-up':>8s} "
+            f"{'all cores':>11s}")
     print(head)
     names = sorted({k[0] for k in rates}, key=lambda s: ("rhs" not in s, "energy" not in s))
     for name in names:
         for n in batches:
             a, b = rates[(name, "numpy", n)], rates[(name, "compiled", n)]
-            print(f"{name:38s} {n:8d} {a:12,.0f} {b:12,.0f} {b / a:8.1f}x")
+            c = rates[(name, "compiled, all cores", n)]
+            print(f"{name:36s} {n:8d} {a:11,.0f} {b:11,.0f} {b / a:7.1f}x {c:11,.0f}")
     print("targets: W' of the energy and quadratic functions >= 5,000,000 states/s at batches >= 4096; "
           "rhs on 32 states >= 20x faster per call")
 
     counts = operation_counts(BladeParameters.table_i("forward").n_stations)
     ghz = clock_ghz()
-    print("\n2. operations of one evaluation (counted in the kernels' source) and the share of one core's peak")
+    print("\n2. operations of one evaluation (counted in the kernels' source) and the share of one "
+          "core's peak (compiled, one thread, best batch)")
     for name, key in (("rhs", "rhs (hover)"), ("energy W'", "energy W' (hover)")):
         flops, calls = counts[name]
-        rate = max(rates[(key, "compiled", n)] for n in batches)
+        rate = max(rates[(key, "compiled", n)] for n in batches)  # one thread
         gflops = flops * rate / 1e9
         line = f"{name:10s} {flops:5d} flops + {calls:3d} sqrt/trig calls per state; {gflops:.2f} GFLOP/s"
         if ghz:

@@ -125,11 +125,14 @@ def _analyse(args) -> int:
     from .conventions import PAPER_TEST_DISTURBANCES
     from .model.blade import Blade
     from .model.parameters import BladeParameters
-    from .model.steady import periodic_motion
+    from .model.steady import periodic_motion, tabulate_motion
 
     params = BladeParameters.table_i(cg=args.cg)
     params = Blade(params, 0.0).params  # trimmed collective, kept at every mu
-    steady = periodic_motion(params, args.mu) if args.steady == "periodic" else None
+    # the periodic motion tabulated once (Hermite, 4096 azimuths): its Fourier series would be
+    # summed again for every state of the searches
+    steady = (tabulate_motion(periodic_motion(params, args.mu)) if args.steady == "periodic"
+              else None)
     lyapunov = quadratic_function if args.lyapunov == "quadratic" else None
     scales = None if args.scales is None else np.radians(args.scales)
     print(f"analysing: cg={args.cg}, mu={args.mu:g}, {args.reading} reading ...", file=sys.stderr, flush=True)

@@ -149,8 +149,9 @@ def _symmetric(X: np.ndarray) -> np.ndarray:
 @jit
 def _hermite_forms(psi, x, xdot, P_grid, D_grid, period, with_rate, w, dw):
     """``w = x^T P x`` and (``with_rate``) ``dw = x^T P' x + 2 x^T P xdot`` with ``P`` the
-    symmetrised periodic cubic Hermite interpolant of :func:`_hermite`, one state at a time
-    (no ``(m, n, n)`` array of matrices)."""
+    periodic cubic Hermite interpolant of :func:`_hermite` of the *symmetric* grids ``P_grid``
+    and ``D_grid``, one state at a time (no ``(m, n, n)`` array of matrices; the upper triangle
+    only)."""
     N = P_grid.shape[0]
     n = x.shape[1]
     h = period / N
@@ -172,20 +173,22 @@ def _hermite_forms(psi, x, xdot, P_grid, D_grid, period, with_rate, w, dw):
         acc = 0.0
         acc_d = 0.0
         for r in range(n):
-            for c in range(n):
-                p_rc = (a0 * P_grid[j, r, c] + b0 * D_grid[j, r, c]
-                        + a1 * P_grid[j1, r, c] + b1 * D_grid[j1, r, c])
-                p_cr = (a0 * P_grid[j, c, r] + b0 * D_grid[j, c, r]
-                        + a1 * P_grid[j1, c, r] + b1 * D_grid[j1, c, r])
-                p_sym = 0.5 * (p_rc + p_cr)
-                acc += x[i, r] * p_sym * x[i, c]
+            xr = x[i, r]
+            for c in range(r, n):
+                p = (a0 * P_grid[j, r, c] + b0 * D_grid[j, r, c]
+                     + a1 * P_grid[j1, r, c] + b1 * D_grid[j1, r, c])
+                xc = x[i, c]
+                if r == c:
+                    acc += p * xr * xc
+                else:
+                    acc += 2.0 * p * xr * xc
                 if with_rate:
-                    d_rc = (da0 * P_grid[j, r, c] + db0 * D_grid[j, r, c]
-                            + da1 * P_grid[j1, r, c] + db1 * D_grid[j1, r, c])
-                    d_cr = (da0 * P_grid[j, c, r] + db0 * D_grid[j, c, r]
-                            + da1 * P_grid[j1, c, r] + db1 * D_grid[j1, c, r])
-                    acc_d += x[i, r] * (0.5 * (d_rc + d_cr)) * x[i, c] \
-                        + 2.0 * x[i, r] * p_sym * xdot[i, c]
+                    d = (da0 * P_grid[j, r, c] + db0 * D_grid[j, r, c]
+                         + da1 * P_grid[j1, r, c] + db1 * D_grid[j1, r, c])
+                    if r == c:
+                        acc_d += d * xr * xc + 2.0 * p * xr * xdot[i, c]
+                    else:
+                        acc_d += 2.0 * (d * xr * xc + p * (xr * xdot[i, c] + xc * xdot[i, r]))
         w[i] = acc
         if with_rate:
             dw[i] = acc_d
@@ -334,11 +337,15 @@ class PeriodicLyapunovSolution:
         """``W`` and ``W'`` by the compiled kernel (hermite interpolation only)."""
         if not np.all(np.isfinite(psi)):
             raise ValueError("psi must be finite")
+        grids = self.__dict__.get("_symmetric_grids")
+        if grids is None:  # once: the symmetric parts, in the layout the kernel reads
+            grids = tuple(np.ascontiguousarray(_symmetric(g)) for g in (self.P_grid, self.dP_grid))
+            object.__setattr__(self, "_symmetric_grids", grids)
         m = x.shape[0]
         w, dw = np.empty(m), np.empty(m)
         with_rate = xdot is not None
         c = np.ascontiguousarray
-        _hermite_forms(c(psi), c(x), c(xdot) if with_rate else c(x), self.P_grid, self.dP_grid,
+        _hermite_forms(c(psi), c(x), c(xdot) if with_rate else c(x), *grids,
                        float(self.period), with_rate, w, dw)
         return w, dw
 
