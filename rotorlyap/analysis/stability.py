@@ -25,7 +25,7 @@ from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
 from ..model.blade import Blade
 from ..model.parameters import BladeParameters
 from ..model.steady import as_steady_motion, disturbed_rhs
-from .functions import energy_function
+from .functions import QuadraticFunction, energy_function
 
 __all__ = ["blade_stability"]
 
@@ -104,8 +104,11 @@ def blade_stability(
             raise TypeError("lyapunov must be callable as lyapunov(blade, steady)")
         fun = lyapunov(blade, motion)
     f = getattr(fun, "f", None) or disturbed_rhs(blade, motion)
+    a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
+    if engine_options.get("rule") == "sound" and isinstance(fun, QuadraticFunction):
+        # W = x^T P x: its extrema on the engine's spheres in closed form
+        engine_options.setdefault("w_matrix", lambda psi: a[:, None] * fun.P(psi) * a[None, :])
     return technical_stability(
-        f, fun.W, DEFAULT_A if A is None else A,
-        scales=DEFAULT_SCALES if scales is None else scales,
+        f, fun.W, DEFAULT_A if A is None else A, scales=a,
         n_psi=n_psi, dW=fun.dW, test_directions=test_disturbances, **engine_options,
     )

@@ -12,7 +12,7 @@ from typing import Callable
 
 import numpy as np
 
-__all__ = ["PeriodicSystem", "mathieu_duffing", "mathieu_matrix"]
+__all__ = ["PeriodicSystem", "mathieu_duffing", "mathieu_matrix", "pulsed_growth"]
 
 Function = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
@@ -106,6 +106,60 @@ def mathieu_duffing(
         return (0.5 * kp - d * k(psi)) * y**2 - d * c * y * v + (d - c) * v**2 + b * y**3 * (v + d * y)
 
     return PeriodicSystem(f=f, W=W, dW=dW, period=2 * np.pi, dim=2)
+
+
+def pulsed_growth(growth: float = 0.5, pulse: float = 2.0, saturation: float = 1.0) -> PeriodicSystem:
+    """A one-state periodic system where the paper's step 6 certifies starts that escape.
+
+    ``x' = (a + b cos psi) x - k x**3``: growth ``a > 0`` on average, a growth pulse ``b`` around
+    ``psi = 0`` and a cubic saturation ``k``; period ``2 pi``. The origin is unstable and every
+    motion settles on a periodic motion whose amplitude peaks near ``psi = 0`` at about
+    ``sqrt((a + b) / k)``.
+
+    The Liapunov function ``W = p(psi) x**2`` with ``p = exp(-2 b sin psi)`` is built so that
+    the paper's checks pass: its derivative along solutions is, exactly,
+    ``W' = 2 p x**2 (a - k x**2)``, negative on every sphere ``|x| = A`` with ``A**2 > a / k``
+    (step 3) and positive inside, for ``x**2 < a / k``. Step 4 gives ``alpha = A**2 exp(-2 b)``,
+    step 5 ``lambda0(psi_j) = A exp(-b (1 - sin psi_j))``, and step 6 at ``psi_j`` alone passes
+    wherever ``lambda0(psi_j)**2 >= a / k``, around ``psi = 90 deg``. A motion started there
+    inside ``lambda0`` grows on the next pulse beyond ``A`` when ``(a + b) / k > A**2``. The
+    theorem's (h) over the whole period fails on the band ``|x| <= A, W >= alpha`` (at
+    ``psi`` near 270 deg the band reaches down to ``|x| = A exp(-2 b)``, where ``W' > 0``): the
+    sound rule certifies nothing, rightly.
+
+    Parameters
+    ----------
+    growth : float
+        ``a`` (> 0).
+    pulse : float
+        ``b`` (> 0).
+    saturation : float
+        ``k`` (> 0).
+
+    Returns
+    -------
+    PeriodicSystem
+    """
+    a, b, k = float(growth), float(pulse), float(saturation)
+    for name, v in (("growth", a), ("pulse", b), ("saturation", k)):
+        if not (np.isfinite(v) and v > 0):
+            raise ValueError(f"{name} must be finite and > 0, got {v!r}")
+
+    def p(psi):
+        return np.exp(-2.0 * b * np.sin(psi))
+
+    def f(psi, x):
+        y = x[..., 0]
+        return ((a + b * np.cos(psi)) * y - k * y**3)[..., None]
+
+    def W(psi, x):
+        return p(psi) * x[..., 0] ** 2
+
+    def dW(psi, x):
+        y2 = x[..., 0] ** 2
+        return 2.0 * p(psi) * y2 * (a - k * y2)
+
+    return PeriodicSystem(f=f, W=W, dW=dW, period=2 * np.pi, dim=1)
 
 
 def mathieu_matrix(a: float, q: float, damping: float = 0.0) -> Callable[[np.ndarray], np.ndarray]:

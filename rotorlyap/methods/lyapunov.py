@@ -29,9 +29,14 @@ import numpy as np
 
 from ._checks import positive_float as _positive_float
 from ._checks import positive_int as _positive_int
-from .sampling import sphere_extremum, unit_sphere_points
+from .sampling import Extremum, sphere_extremum, unit_sphere_points
 
-__all__ = ["TechnicalStabilityResult", "technical_stability", "orbital_derivative"]
+__all__ = ["RULES", "TechnicalStabilityResult", "band_max_dw", "technical_stability",
+           "orbital_derivative"]
+
+RULES = ("paper", "sound")
+"""How :func:`technical_stability` checks condition (h): the paper's step 6 at each start
+azimuth, or the theorem's (h) over the whole period."""
 
 Function = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
@@ -80,6 +85,15 @@ class TechnicalStabilityResult:
         indicator, never a certificate.
     n_evaluations : int
         Number of states at which ``W'`` or ``W`` was evaluated.
+    rule : str
+        ``"paper"`` (step 6 at each start azimuth: the paper's algorithm) or ``"sound"`` (the
+        theorem's (h) over the whole period); see :func:`technical_stability`.
+    level : float
+        ``rule="sound"``: the level ``c`` of ``W`` that bounds the start regions (``alpha``);
+        NaN for the paper's rule.
+    band_max_dW : float
+        ``rule="sound"``: the largest ``W'`` found on the band ``||x|| <= A, W >= c`` over the
+        whole period (negative, below the margin, where certified); NaN for the paper's rule.
     """
 
     A_requested: float
@@ -97,6 +111,9 @@ class TechnicalStabilityResult:
     message: str
     reading: str = "strict"
     n_evaluations: int = field(default=0, compare=False)
+    rule: str = "paper"
+    level: float = float("nan")
+    band_max_dW: float = float("nan")
 
     def __post_init__(self) -> None:
         for name in ("scales", "psi", "lambda0", "max_dW", "argmax_dW", "stable"):
@@ -218,6 +235,9 @@ def technical_stability(
     fd_step: float = 1e-4,
     seed: int = 0,
     test_directions=None,
+    rule: str = "paper",
+    w_matrix: Callable[[np.ndarray], np.ndarray] | None = None,
+    margin: float = 1e-6,
 ) -> TechnicalStabilityResult:
     """Certify bounded motion of ``x' = f(psi, x)`` with the Liapunov function ``W``.
 
@@ -269,6 +289,26 @@ def technical_stability(
         Step of :func:`orbital_derivative` when ``dW`` is omitted.
     seed : int
         Seed of the quasi-random directions (results are deterministic for a given seed).
+    rule : {"paper", "sound"}
+        How condition (h) of the theorem is checked. ``"paper"``: the paper's algorithm, step 6
+        at each start azimuth alone (``W' <= 0`` on the shell ``lambda0_j < ||x|| <= A`` at
+        ``psi_j``); when ``f`` or ``W`` depends on ``psi`` this does not follow from the theorem
+        (a motion started at ``psi_j`` lives at later azimuths), so its verdicts are the
+        paper's, not certificates. ``"sound"``: the theorem's (h) over the whole period: with
+        ``c = alpha``, ``W' < 0`` at every ``psi`` and every ``x`` of the band
+        ``||x|| <= A, W(psi, x) >= c`` (searched over the period, the azimuth free), below
+        ``-margin``; ``A`` is reduced until it holds, and then every azimuth with
+        ``lambda0_j > 0`` is certified (all or nothing). See :func:`band_max_dw`.
+    w_matrix : callable, optional
+        For a quadratic ``W(psi, x) = y^T S(psi) y`` in the scaled coordinates ``y_i = x_i /
+        a_i``: ``w_matrix(psi)`` returns ``S`` of shape ``psi.shape + (n, n)``, symmetric.
+        Then the extrema of ``W`` on spheres are closed forms (``rho^2`` times the extreme
+        eigenvalues of ``S``: steps 4 and 5 without a search) and the band's inner boundary
+        along each ray too. Only with ``rule="sound"``.
+    margin : float
+        ``rule="sound"``: certify only where the largest ``W'`` found on the band is below
+        ``-margin`` times the largest ``|W|`` on the sphere ``||x|| = A`` (per unit azimuth), a
+        relative margin against the search missing the true maximum by a little.
     test_directions : array_like, optional
         Shape ``(k, n)``: the *practical reading*. Spheres are represented only by the states
         ``rho * a * d / |d|`` for these directions ``d`` (in scaled coordinates), at the grid
@@ -322,6 +362,18 @@ def technical_stability(
     if not (np.isfinite(rtol) and rtol >= 0):
         raise ValueError(f"rtol must be finite and >= 0, got {rtol!r}")
     fd_step = _positive_float("fd_step", fd_step)
+    if rule not in RULES:
+        raise ValueError(f"rule must be one of {RULES}, got {rule!r}")
+    if w_matrix is not None and not callable(w_matrix):
+        raise TypeError(f"w_matrix must be callable as w_matrix(psi) or None, got {type(w_matrix).__name__}")
+    if w_matrix is not None and rule != "sound":
+        raise ValueError("w_matrix (closed-form extrema of a quadratic W) is used only with rule='sound'")
+    margin = float(margin)
+    if not (np.isfinite(margin) and margin >= 0):
+        raise ValueError(f"margin must be finite and >= 0, got {margin!r}")
+    if rule == "sound" and test_directions is not None:
+        raise ValueError("rule='sound' searches whole spheres; the practical reading "
+                         "(test_directions) is the paper's rule only")
 
     sys = _Checked(f, W, dW, n, fd_step * period / (2 * np.pi))
     if test_directions is None:
@@ -345,6 +397,9 @@ def technical_stability(
     x0 = (0.5 * A * dirs[:1]) * scales
     sys.rhs(psi[:1], x0)
     sys.w(psi[:1], x0)
+    if rule == "sound":
+        return _sound(sys, w_matrix, A, psi, period, scales, dirs, common, n_radii=n_radii,
+                      n_shells=n_shells, n_bisect=n_bisect, rtol=rtol, margin=margin)
 
     # round-off allowance from the size of W on the requested sphere
     w_scale = sphere_extremum(
@@ -353,37 +408,8 @@ def technical_stability(
     ).value[0]
     tol = rtol * w_scale
 
-    def sphere_max_dw(radius: float, stop: bool) -> float:
-        ext = sphere_extremum(
-            sys.dw, psi, radius, scales, dirs, per_psi=False, free_psi=free,
-            stop_above=tol if stop else None, **common,
-        )
-        return float(ext.value[0])
-
     # step 3
-    step3 = sphere_max_dw(A, stop=False)
-    if step3 <= tol:
-        A_used = A
-    else:
-        grid = np.unique(np.concatenate([
-            A * np.arange(1, n_radii) / n_radii,
-            np.geomspace(A * 1e-4, A, n_radii, endpoint=False),
-        ]))[::-1]
-        A_used, failing = 0.0, A
-        for radius in grid:
-            if sphere_max_dw(radius, stop=True) <= tol:
-                A_used = radius
-                break
-            failing = radius
-        if A_used > 0:
-            lo, hi = A_used, failing
-            for _ in range(n_bisect):
-                mid = 0.5 * (lo + hi)
-                if sphere_max_dw(mid, stop=True) <= tol:
-                    lo = mid
-                else:
-                    hi = mid
-            A_used = lo
+    A_used, step3 = _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect)
 
     if A_used == 0.0:
         ext = sphere_extremum(sys.dw, psi, A, scales, dirs, **common)
@@ -440,4 +466,282 @@ def technical_stability(
         A_requested=A, scales=scales, A=float(A_used), alpha=alpha, psi=psi,
         lambda0=lambda0, max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period,
         step3_max_dW=step3, tol=tol, message=message, reading=reading, n_evaluations=sys.count,
+    )
+
+
+def _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect, *, A_max=None):
+    """Step 3: ``(A_used, max W' on the sphere A)`` with ``A_used`` the largest radius found
+    with ``W' <= tol`` on its sphere over the whole period (0 if none)."""
+
+    def sphere_max_dw(radius: float, stop: bool) -> float:
+        ext = sphere_extremum(
+            sys.dw, psi, radius, scales, dirs, per_psi=False, free_psi=free,
+            stop_above=tol if stop else None, **common,
+        )
+        return float(ext.value[0])
+
+    step3 = sphere_max_dw(A, stop=False)
+    if step3 <= tol:
+        return A, step3
+    grid = np.unique(np.concatenate([
+        A * np.arange(1, n_radii) / n_radii,
+        np.geomspace(A * 1e-4, A, n_radii, endpoint=False),
+    ]))[::-1]
+    A_used, failing = 0.0, A
+    for radius in grid:
+        if sphere_max_dw(radius, stop=True) <= tol:
+            A_used = radius
+            break
+        failing = radius
+    if A_used > 0:
+        lo, hi = A_used, failing
+        for _ in range(n_bisect):
+            mid = 0.5 * (lo + hi)
+            if sphere_max_dw(mid, stop=True) <= tol:
+                lo = mid
+            else:
+                hi = mid
+        A_used = lo
+    return float(A_used), step3
+
+
+# --------------------------------------------------------------------------------------
+# The theorem's condition (h) over the whole period (rule="sound")
+# --------------------------------------------------------------------------------------
+
+
+def _extreme_eigenvalues(w_matrix, psi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    S = np.asarray(w_matrix(np.asarray(psi, dtype=float)), dtype=float)
+    ev = np.linalg.eigvalsh(0.5 * (S + np.swapaxes(S, -1, -2)))
+    return ev[..., 0], ev[..., -1]
+
+
+def _min_over_period(g: Callable[[np.ndarray], np.ndarray], period: float, n: int = 4096) -> float:
+    """Minimum over one period of a smooth periodic scalar function of psi: a uniform grid of
+    ``n`` points, then a bounded scalar search around each of the best three."""
+    from scipy.optimize import minimize_scalar
+
+    grid = period * np.arange(n) / n
+    vals = np.asarray(g(grid), dtype=float)
+    best = float(vals.min())
+    h = period / n
+    for i in np.argsort(vals)[:3]:
+        res = minimize_scalar(lambda p: float(g(np.array([p]))[0]), bounds=(grid[i] - h, grid[i] + h),
+                              method="bounded", options={"xatol": 1e-12 * period})
+        best = min(best, float(res.fun))
+    return best
+
+
+def _ray_level(sys, psi: np.ndarray, u: np.ndarray, scales: np.ndarray, c: float, A: float,
+               w_matrix, n_scan: int = 16, n_bisect: int = 40) -> np.ndarray:
+    """First radius along each ray ``r u`` (``u`` unit, scaled coordinates) where ``W >= c``,
+    at most ``A`` (``A`` where ``W < c`` on the whole ray up to ``A``)."""
+    if w_matrix is not None:  # W = r^2 u^T S u
+        S = np.asarray(w_matrix(psi), dtype=float)
+        q = np.einsum("mi,mij,mj->m", u, S, u)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r = np.sqrt(c / q)
+        return np.where(q > 0, np.minimum(r, A), A)
+    m = u.shape[0]
+    radii = A * np.arange(1, n_scan + 1) / n_scan
+    w = sys.w(np.repeat(psi, n_scan), (np.repeat(u, n_scan, axis=0) * np.tile(radii, m)[:, None]) * scales)
+    above = w.reshape(m, n_scan) >= c
+    first = np.where(above.any(axis=1), np.argmax(above, axis=1), n_scan)
+    hi = np.where(first < n_scan, radii[np.minimum(first, n_scan - 1)], A)
+    lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
+    todo = first < n_scan
+    for _ in range(n_bisect):
+        if not todo.any():
+            break
+        mid = 0.5 * (lo + hi)
+        wm = sys.w(psi[todo], (u[todo] * mid[todo, None]) * scales)
+        up = np.zeros(m, dtype=bool)
+        up[todo] = wm >= c
+        hi = np.where(todo & up, mid, hi)
+        lo = np.where(todo & ~up, mid, lo)
+    return hi
+
+
+def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: float, *,
+                scales, period: float = 2 * np.pi, psi=None, w_matrix=None, per_psi: bool = False,
+                n_sphere: int = 1024, n_levels: int = 5, n_refine: int = 4, n_iter: int = 40,
+                seed: int = 0, stop_above: float | None = None, fd_step: float = 1e-4,
+                directions=None):
+    """Largest ``W'`` on the band ``||x|| <= A, W(psi, x) >= c`` (condition (h) of the theorem).
+
+    The band is searched ray by ray: along each direction ``u`` (scaled coordinates) at each
+    azimuth, from the first radius ``r_c(psi, u)`` where ``W`` reaches ``c`` (closed form for a
+    quadratic ``W`` given by ``w_matrix``, else a scan of 16 radii and bisection) out to ``A``,
+    the point ``(r_c + t (A - r_c)) u`` for ``t`` in ``[0, 1]``. Points of a ray beyond
+    ``r_c`` where ``W`` dips below ``c`` again are searched too: a superset of the band, on the
+    safe side. The search samples ``n_levels`` values of ``t`` and the directions of
+    :func:`rotorlyap.methods.sampling.unit_sphere_points`, then refines the best with ``u``,
+    ``t`` and (unless ``per_psi``) the azimuth free.
+
+    Parameters
+    ----------
+    f, W, dW : callable
+        As :func:`technical_stability` takes them (``dW`` None: a central difference).
+    c, A : float
+        The level and the bound (scaled norm).
+    scales : array_like
+        Norm scales ``a_i``.
+    period : float
+        Period of ``f`` and ``W``.
+    psi : array_like, optional
+        Azimuths to start from (default 72 uniform).
+    w_matrix : callable, optional
+        ``S(psi)`` of a quadratic ``W`` (see :func:`technical_stability`).
+    per_psi : bool
+        One maximum per azimuth with the azimuth fixed (a map), instead of one over the period.
+    n_sphere, n_levels, n_refine, n_iter, seed :
+        Resolution of the search (as :func:`technical_stability`); ``n_levels`` values of ``t``.
+    stop_above : float, optional
+        Return as soon as a sample exceeds it (not with ``per_psi``).
+    directions : array_like, optional
+        Unit directions to sample instead of ``unit_sphere_points(n, n_sphere, seed)``.
+
+    Returns
+    -------
+    rotorlyap.methods.sampling.Extremum
+        ``value`` (J per unit azimuth), ``psi`` and ``x`` of the maxima.
+    """
+    scales = np.asarray(scales, dtype=float)
+    n = scales.size
+    sys = f if isinstance(f, _Checked) else _Checked(f, W, dW, n, fd_step * period / (2 * np.pi))
+    psi = period * np.arange(72) / 72 if psi is None else np.atleast_1d(np.asarray(psi, dtype=float))
+    dirs = unit_sphere_points(n, n_sphere, seed) if directions is None else np.asarray(directions, dtype=float)
+
+    def state(p, y):
+        t = np.linalg.norm(y, axis=1)
+        u = y / np.maximum(t, 1e-300)[:, None]
+        rc = _ray_level(sys, p, u, scales, c, A, w_matrix)
+        r = rc + np.clip(t, 0.0, 1.0) * (A - rc)
+        return (u * r[:, None]) * scales
+
+    k = psi.size
+    ext = sphere_extremum(
+        lambda p, y: sys.dw(p, state(p, y)), psi, None, np.ones(n), dirs, per_psi=per_psi,
+        free_psi=not per_psi, period=period, shell=(np.full(k, 1e-9), np.ones(k)),
+        n_levels=n_levels, n_refine=n_refine, n_iter=n_iter,
+        stop_above=stop_above if not per_psi else None,
+    )
+    return Extremum(ext.value, ext.psi, state(ext.psi, ext.x))
+
+
+def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_shells, n_bisect,
+           rtol, margin) -> TechnicalStabilityResult:
+    """:func:`technical_stability` with ``rule="sound"``."""
+    n_psi = psi.size
+    n = scales.size
+
+    def alpha_of(r: float) -> float:
+        if w_matrix is not None:
+            return r * r * _min_over_period(lambda p: _extreme_eigenvalues(w_matrix, p)[0], period)
+        return float(sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False,
+                                     free_psi=True, **common).value[0])
+
+    def w_size(r: float) -> float:
+        if w_matrix is not None:
+            return r * r * float(np.max(np.abs(_extreme_eigenvalues(w_matrix, psi))))
+        return float(sphere_extremum(lambda p, x: np.abs(sys.w(p, x)), psi, r, scales, dirs,
+                                     per_psi=False, n_refine=1, n_iter=0, period=period).value[0])
+
+    def band(r: float, alpha: float, stop: float | None, per_psi: bool = False):
+        return band_max_dw(sys, None, None, alpha, r, scales=scales, period=period, psi=psi,
+                           w_matrix=w_matrix, per_psi=per_psi, directions=dirs,
+                           n_levels=n_shells, stop_above=stop, n_refine=common["n_refine"],
+                           n_iter=common["n_iter"])
+
+    def passes(r: float):
+        alpha = alpha_of(r)
+        need = -margin * w_size(r)
+        if not alpha > 0:
+            return False, alpha, np.inf, need
+        ext = band(r, alpha, stop=need)
+        return bool(ext.value[0] <= need), alpha, float(ext.value[0]), need
+
+    # W' on the sphere itself (a part of the band): the paper's step 3 bounds A from above
+    A1, first_worst = _step3(sys, A, psi, scales, dirs, True, common, -margin * w_size(A),
+                             n_radii, n_bisect)
+    A_used, alpha, worst, need = 0.0, 0.0, first_worst, -margin * w_size(A)
+    if A1 > 0:
+        ok, alpha_1, worst_1, need_1 = passes(A1)
+        first_worst = worst_1  # the band's worst at the sphere's bound: reported if nothing passes
+        if ok:
+            A_used, alpha, worst, need = A1, alpha_1, worst_1, need_1
+        else:
+            failing = A1
+            grid = np.unique(np.concatenate([
+                A1 * np.arange(1, n_radii) / n_radii, np.geomspace(A1 * 1e-4, A1, n_radii, endpoint=False),
+            ]))[::-1]
+            for radius in grid:
+                ok_r, alpha_r, worst_r, need_r = passes(float(radius))
+                if ok_r:
+                    A_used, alpha, worst, need = float(radius), alpha_r, worst_r, need_r
+                    break
+                failing = float(radius)
+            if A_used > 0:
+                lo, hi = A_used, failing
+                for _ in range(n_bisect):
+                    mid = 0.5 * (lo + hi)
+                    ok_m, alpha_m, worst_m, need_m = passes(mid)
+                    if ok_m:
+                        lo, alpha, worst, need = mid, alpha_m, worst_m, need_m
+                    else:
+                        hi = mid
+                A_used = lo
+
+    if A_used == 0.0:
+        return TechnicalStabilityResult(
+            A_requested=A, scales=scales, A=0.0, alpha=0.0, psi=psi, lambda0=np.zeros(n_psi),
+            max_dW=np.full(n_psi, first_worst), argmax_dW=np.zeros((n_psi, n)),
+            stable=np.zeros(n_psi, dtype=bool), period=period, step3_max_dW=first_worst,
+            tol=need, reading="strict", n_evaluations=sys.count, rule="sound",
+            level=float("nan"), band_max_dW=first_worst,
+            message=(f"nothing certified: for every bound tried from {A * 1e-4:.3g} to A = {A:.3g}, "
+                     "W' > -margin was found on the band ||x|| <= A, W >= alpha over the period "
+                     f"(condition (h) of the theorem; at the largest bound tried, max W' = {first_worst:.3g})"),
+        )
+
+    c = alpha
+    # the map of W' on the band at each start azimuth (a diagnostic: where (h) is tightest)
+    ext = band(A_used, c, stop=None, per_psi=True)
+    # start regions: the largest ball inside {W(psi_j, .) < c}
+    if w_matrix is not None:
+        lam_max = _extreme_eigenvalues(w_matrix, psi)[1]
+        lambda0 = np.minimum(np.sqrt(c / lam_max), A_used)
+    else:
+        radii = A_used * np.arange(1, n_radii + 1) / n_radii
+        sup_w = np.empty((n_psi, n_radii))
+        for i, radius in enumerate(radii):
+            sup_w[:, i] = sphere_extremum(sys.w, psi, radius, scales, dirs, **common).value
+        running = np.maximum.accumulate(sup_w, axis=1)
+        reach = running >= c
+        first = np.where(reach.any(axis=1), np.argmax(reach, axis=1), n_radii)
+        lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
+        hi = np.where(first < n_radii, radii[np.minimum(first, n_radii - 1)], A_used)
+        todo = first < n_radii
+        for _ in range(n_bisect):
+            if not todo.any():
+                break
+            mid = 0.5 * (lo + hi)
+            sw = np.full(n_psi, np.inf)
+            sw[todo] = sphere_extremum(sys.w, psi[todo], mid[todo], scales, dirs, **common).value
+            below = sw < c
+            lo = np.where(todo & below, mid, lo)
+            hi = np.where(todo & ~below, mid, hi)
+        lambda0 = np.where(todo, lo, A_used)
+    worst = max(worst, float(ext.value.max()))
+    certified = worst <= need
+    stable = (lambda0 > 0) & certified
+    reduced = "" if A_used == A else f" (A reduced from {A:.4g} to {A_used:.4g})"
+    message = (f"certified at {int(stable.sum())} of {n_psi} azimuths{reduced}: W' < 0 on the band "
+               "||x|| <= A, W >= alpha over the whole period (numerical certificate)"
+               if certified else "nothing certified: W' > -margin found on the band")
+    return TechnicalStabilityResult(
+        A_requested=A, scales=scales, A=float(A_used), alpha=float(c), psi=psi, lambda0=lambda0,
+        max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period, step3_max_dW=first_worst,
+        tol=need, message=message, reading="strict", n_evaluations=sys.count, rule="sound",
+        level=float(c), band_max_dW=worst,
     )
