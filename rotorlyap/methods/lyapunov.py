@@ -510,10 +510,19 @@ def _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect, *, A
 # --------------------------------------------------------------------------------------
 
 
+EIGENVALUE_ROUNDOFF = 1e-12
+"""Allowance for the round-off of a symmetric eigen-solver, relative to the largest eigenvalue
+(its error bound is a small multiple of ``n eps ||S||``): the closed-form extrema of a
+quadratic ``W`` are widened by it, on the safe side (``inf W`` lower, ``sup W`` higher)."""
+
+
 def _extreme_eigenvalues(w_matrix, psi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Smallest and largest eigenvalues of the symmetric part of ``w_matrix(psi)``, widened by
+    :data:`EIGENVALUE_ROUNDOFF` so that they bound the exact ones."""
     S = np.asarray(w_matrix(np.asarray(psi, dtype=float)), dtype=float)
     ev = np.linalg.eigvalsh(0.5 * (S + np.swapaxes(S, -1, -2)))
-    return ev[..., 0], ev[..., -1]
+    slack = EIGENVALUE_ROUNDOFF * np.abs(ev).max(axis=-1)
+    return ev[..., 0] - slack, ev[..., -1] + slack
 
 
 def _min_over_period(g: Callable[[np.ndarray], np.ndarray], period: float, n: int = 4096) -> float:
