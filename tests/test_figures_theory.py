@@ -242,3 +242,20 @@ def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_py
 
 def test_all_names_exist():
     assert all(hasattr(theory, name) for name in theory.__all__)
+
+
+def test_rule_comparison_shows_the_paper_rule_certifying_escaping_starts():
+    """The chapter-2 counterexample: the paper's rule certifies azimuths whose motions pass A;
+    the sound rule certifies none; the figure has its two panels with labelled axes."""
+    from rotorlyap.methods.examples import pulsed_growth
+
+    data = theory.rule_comparison_data(pulsed_growth(), 0.5, 1.0, n_periods=2.0)
+    facts = data.facts()
+    assert facts["ch2_cx_n_paper"] > 0 and facts["ch2_cx_n_sound"] == 0
+    assert facts["ch2_cx_max_ratio"] > 1.0 and facts["ch2_cx_band_max"] > 0
+    assert data.sim_norm.shape[1] == facts["ch2_cx_n_paper"]
+    assert set(data.export()) == {"psi_deg", "lambda0_paper", "certified_paper", "certified_sound"}
+    fig = theory.figure_rule_comparison(data)
+    assert tuple(fig.get_size_inches()) == pytest.approx((8, 4.0))
+    assert [ax.get_xlabel() for ax in fig.axes] == [r"azimuth $\psi$ (deg)", "revolutions after the start"]
+    assert fig.number not in plt.get_fignums()

@@ -46,6 +46,7 @@ __all__ = [
     "StartRegionData", "start_region_data", "plot_start_region", "figure_start_region",
     "MaxNormData", "max_norm_data", "plot_max_norm", "figure_max_norm",
     "ConvergenceData", "convergence_data", "plot_convergence", "figure_convergence",
+    "RuleComparisonData", "rule_comparison_data", "figure_rule_comparison",
 ]
 
 
@@ -824,4 +825,129 @@ def figure_max_norm(data: MaxNormData) -> Figure:
     """
     fig, ax = subplots(figsize=(8, 3.4))
     plot_max_norm(data, ax)
+    return finish(fig)
+
+
+@dataclass(frozen=True)
+class RuleComparisonData:
+    """The paper's step 6 against the theorem's (h) over the whole period, on one system.
+
+    Attributes
+    ----------
+    paper, sound : TechnicalStabilityResult
+        The engine's results with ``rule="paper"`` and ``rule="sound"``.
+    growth, saturation : float
+        ``a`` and ``k`` of :func:`rotorlyap.methods.examples.pulsed_growth` (``W' > 0`` for
+        ``x**2 < a / k``).
+    level_radius : numpy.ndarray
+        Inner boundary of the band ``W >= alpha`` at :attr:`psi_fine_deg` (scaled norm).
+    psi_fine_deg : numpy.ndarray
+        A fine azimuth grid (deg) for the band.
+    sim_psi : numpy.ndarray
+        Azimuth (rev, from the start) of the simulated motions.
+    sim_norm : numpy.ndarray
+        Their norms, shape ``(len(sim_psi), number of certified azimuths)``.
+    """
+
+    paper: TechnicalStabilityResult
+    sound: TechnicalStabilityResult
+    growth: float
+    saturation: float
+    level_radius: np.ndarray
+    psi_fine_deg: np.ndarray
+    sim_psi: np.ndarray
+    sim_norm: np.ndarray
+
+    @property
+    def max_ratio(self) -> float:
+        """Largest ``||x|| / A`` reached by a motion started inside a start region the paper's
+        rule certified."""
+        return float(self.sim_norm.max() / self.paper.A)
+
+    def summary(self) -> str:
+        """Both verdicts, the certified azimuths and the motions' largest norm (rounded)."""
+        idx = np.flatnonzero(self.paper.stable)
+        deg = ", ".join("%.0f" % d for d in np.degrees(self.paper.psi[idx]))
+        return (f"paper's rule: certified at {idx.size} of {self.paper.psi.size} azimuths "
+                f"(psi = {deg} deg), lambda0 up to {self.paper.lambda0.max():.2f}\n"
+                f"motions from 0.99 lambda0 there: largest ||x|| / A = {self.max_ratio:.2f}\n"
+                f"sound rule: {self.sound.stable.sum()} certified; largest W' on the band at "
+                f"A = 1: {self.sound.band_max_dW:.2f}")
+
+    def facts(self, prefix: str = "ch2") -> dict:
+        """Glue values: the paper's count, the motions' largest ``||x|| / A``, the band's ``W'``."""
+        return {f"{prefix}_cx_n_paper": int(self.paper.stable.sum()),
+                f"{prefix}_cx_n_psi": int(self.paper.psi.size),
+                f"{prefix}_cx_max_ratio": round(self.max_ratio, 2),
+                f"{prefix}_cx_band_max": round(float(self.sound.band_max_dW), 2),
+                f"{prefix}_cx_n_sound": int(self.sound.stable.sum())}
+
+    def export(self) -> dict:
+        """Columns of the figure's CSV: the paper's start regions by azimuth."""
+        return {"psi_deg": np.degrees(self.paper.psi), "lambda0_paper": self.paper.lambda0,
+                "certified_paper": self.paper.stable.astype(int),
+                "certified_sound": self.sound.stable.astype(int)}
+
+
+def rule_comparison_data(system: PeriodicSystem, growth: float, saturation: float, *, A: float = 1.0,
+                         n_psi: int = 24, n_periods: float = 3.0) -> RuleComparisonData:
+    """Run both rules on ``system`` (a :func:`~rotorlyap.methods.examples.pulsed_growth`) and
+    simulate a motion from ``0.99 lambda0_j`` at every azimuth the paper's rule certifies."""
+    kw = dict(scales=np.ones(system.dim), n_psi=n_psi, dW=system.dW, period=system.period)
+    paper = technical_stability(system.f, system.W, A, rule="paper", **kw)
+    sound = technical_stability(system.f, system.W, A, rule="sound", **kw)
+    psi_fine = np.linspace(0.0, system.period, 361)
+    w_unit = system.W(psi_fine, np.ones((psi_fine.size, system.dim)) / np.sqrt(system.dim))
+    level = np.sqrt(paper.alpha / w_unit)  # W = p(psi) x^2: the radius where W = alpha
+    idx = np.flatnonzero(paper.stable)
+    norms, psi_rel = [], None
+    for j in idx:
+        sim = simulate(system.f, 0.99 * paper.lambda0[j] * np.ones((1, system.dim)) / np.sqrt(system.dim),
+                       paper.psi[j], n_periods, period=system.period, points_per_period=180)
+        norms.append(sim.norm[:, 0])
+        psi_rel = (sim.psi - sim.psi[0]) / system.period
+    return RuleComparisonData(paper=paper, sound=sound, growth=float(growth), saturation=float(saturation),
+                              level_radius=level, psi_fine_deg=np.degrees(psi_fine),
+                              sim_psi=psi_rel, sim_norm=np.stack(norms, axis=1))
+
+
+def figure_rule_comparison(data: RuleComparisonData) -> Figure:
+    """Left: the azimuth-norm plane with the band ``W >= alpha`` inside ``A``, the region
+    ``W' > 0`` and the start regions the paper's rule certifies; right: the motions started there.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        8 x 4 in, laid out and closed in pyplot.
+    """
+    fig, (ax, bx) = subplots(1, 2, figsize=(8, 4.0))
+    A = data.paper.A
+    deg = data.psi_fine_deg
+    grow = np.sqrt(data.growth / data.saturation)
+    inner = np.minimum(data.level_radius, A)
+    top = np.minimum(grow, A)
+    ax.fill_between(deg, 0, np.minimum(inner, top), color="0.85", lw=0)
+    ax.fill_between(deg, inner, A, color="tab:orange", alpha=0.3, lw=0)
+    ax.fill_between(deg, inner, np.maximum(inner, top), color="tab:red", alpha=0.6, lw=0)
+    ax.plot([], [], "s", color="0.85", label=r"$W' > 0$, $W < \alpha$")
+    ax.plot([], [], "s", color="tab:orange", alpha=0.4, label=r"band $W \geq \alpha$, $\|x\| \leq A$")
+    ax.plot([], [], "s", color="tab:red", alpha=0.6, label=r"$W' > 0$ on the band: (h) fails")
+    ax.axhline(A, color="tab:green", lw=2, label="$A$")
+    idx = data.paper.stable
+    ax.vlines(np.degrees(data.paper.psi[idx]), 0, data.paper.lambda0[idx], color="tab:blue", lw=3,
+              label=r"certified starts, paper's rule")
+    ax.set_xlim(0, 360)
+    ax.set_ylim(0, 1.1 * A)
+    ax.set_xticks(np.arange(0, 361, 90))
+    ax.set_xlabel(r"azimuth $\psi$ (deg)")
+    ax.set_ylabel(r"$\|x\|$")
+    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.22), fontsize=7, ncol=2, frameon=False)
+    for k in range(data.sim_norm.shape[1]):
+        bx.plot(data.sim_psi, data.sim_norm[:, k] / A, color="tab:blue", lw=1)
+    bx.axhline(1.0, color="tab:green", lw=2, label=r"$\|x\| = A$")
+    bx.plot([], [], color="tab:blue", label=r"motions from $0.99\,\lambda_0$")
+    bx.set_xlabel("revolutions after the start")
+    bx.set_ylabel(r"$\|x\| / A$")
+    bx.set_ylim(0, 1.1 * max(1.0, float(data.sim_norm.max() / A)))
+    bx.legend(loc="upper left", bbox_to_anchor=(0.0, -0.22), fontsize=7, ncol=2, frameon=False)
     return finish(fig)
