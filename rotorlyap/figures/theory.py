@@ -868,11 +868,12 @@ class RuleComparisonData:
         """Both verdicts, the certified azimuths and the motions' largest norm (rounded)."""
         idx = np.flatnonzero(self.paper.stable)
         deg = ", ".join("%.0f" % d for d in np.degrees(self.paper.psi[idx]))
-        return (f"paper's rule: certified at {idx.size} of {self.paper.psi.size} azimuths "
-                f"(psi = {deg} deg), lambda0 up to {self.paper.lambda0.max():.2f}\n"
-                f"motions from 0.99 lambda0 there: largest ||x|| / A = {self.max_ratio:.2f}\n"
-                f"sound rule: {self.sound.stable.sum()} certified; largest W' on the band at "
-                f"A = 1: {self.sound.band_max_dW:.2f}")
+        return (f"paper's rule: {idx.size} of {self.paper.psi.size} azimuths certified "
+                f"(psi = {deg} deg)\n"
+                f"  lambda0 up to {self.paper.lambda0.max():.2f}; motions from 0.99 lambda0: "
+                f"largest ||x|| / A = {self.max_ratio:.2f}\n"
+                f"sound rule: {self.sound.stable.sum()} certified; largest W' on the band: "
+                f"{self.sound.band_max_dW:.2f}")
 
     def facts(self, prefix: str = "ch2") -> dict:
         """Glue values: the paper's count, the motions' largest ``||x|| / A``, the band's ``W'``."""
