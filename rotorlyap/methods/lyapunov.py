@@ -663,12 +663,17 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
                            n_iter=common["n_iter"])
 
     def passes(r: float):
+        """(h) on the band of radius r: a search over the period with the azimuth free, then,
+        if it found nothing, the map at the grid azimuths with the azimuth fixed (two searches
+        started differently: the one can find what the other misses)."""
         alpha = alpha_of(r)
         need = -margin * w_size(r)
         if not alpha > 0:
             return False, alpha, np.inf, need
-        ext = band(r, alpha, stop=need)
-        return bool(ext.value[0] <= need), alpha, float(ext.value[0]), need
+        worst = float(band(r, alpha, stop=need).value[0])
+        if worst <= need:
+            worst = max(worst, float(band(r, alpha, stop=None, per_psi=True).value.max()))
+        return bool(worst <= need), alpha, worst, need
 
     # W' on the sphere itself (a part of the band): the paper's step 3 bounds A from above
     A1, first_worst = _step3(sys, A, psi, scales, dirs, True, common, -margin * w_size(A),
