@@ -82,6 +82,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="6 norm scales a_i in deg and deg/rad, e.g. '2 2 1 2 0.5 5' (the default)")
     a.add_argument("--reading", choices=("strict", "practical"), default="strict",
                    help="strict: whole spheres (a certificate); practical: the 12 signed axes only (an indicator)")
+    a.add_argument("--rule", choices=("paper", "sound"), default="paper",
+                   help="paper: step 6 at each start azimuth (the paper's algorithm); sound: the "
+                        "theorem's (h) on the band over the whole period (a numerical certificate)")
     a.add_argument("--steady", choices=("hover", "periodic"), default="hover",
                    help="steady motion: the hover equilibrium (the paper) or the true periodic motion")
     a.add_argument("--lyapunov", choices=("energy", "quadratic"), default="energy",
@@ -104,7 +107,10 @@ def _result_json(res, params, mu: float, args) -> dict:
         "case": {"cg": args.cg, "mu": mu, "collective_deg": round(float(params.collective) * deg, 4),
                  "steady": args.steady, "lyapunov": args.lyapunov},
         "reading": res.reading,
-        "certificate": res.reading == "strict",
+        "rule": res.rule,
+        # the paper's step 6 at one azimuth is not implied by the theorem when anything depends
+        # on psi: only the sound rule's strict reading is a (numerical) certificate
+        "certificate": res.reading == "strict" and res.rule == "sound",
         "A_requested": res.A_requested,
         "A": round(float(res.A), 6),
         "alpha": round(float(res.alpha), 6),
@@ -140,6 +146,7 @@ def _analyse(args) -> int:
         params, args.mu, lyapunov=lyapunov, A=args.A, scales=scales, n_psi=args.n_psi,
         steady=steady, n_sphere=args.n_sphere,
         test_disturbances=PAPER_TEST_DISTURBANCES if args.reading == "practical" else None,
+        rule=args.rule,
     )
     json.dump(_result_json(res, params, args.mu, args), sys.stdout, indent=2)
     sys.stdout.write("\n")

@@ -20,6 +20,18 @@ def test_help_lists_the_commands():
     assert "analyse" in out.stdout and "figures" in out.stdout
 
 
+def test_analyse_sound_rule_is_the_certificate(capsys):
+    """--rule sound checks (h) over the whole period; only its strict reading is called a
+    certificate, the paper's rule is reported as such."""
+    assert main(["analyse", "--cg", "forward", "--mu", "0", "--rule", "sound", "--n-psi", "6",
+                 "--lyapunov", "quadratic"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["rule"] == "sound" and data["certificate"] is True and all(data["stable"])
+    assert main(["analyse", "--cg", "forward", "--mu", "0", "--n-psi", "6", "--lyapunov", "quadratic"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["rule"] == "paper" and data["certificate"] is False
+
+
 def test_analyse_prints_the_result_as_json(capsys):
     """analyse prints a JSON object with the engine's named fields; the practical reading is
     never called a certificate."""
@@ -39,6 +51,7 @@ def test_analyse_prints_the_result_as_json(capsys):
         (["analyse", "--A", "-1"], "--A must lie in (0, 1000]"),
         (["analyse", "--scales", "1 2 3"], "--scales must be 6 positive numbers"),
         (["analyse", "--n-psi", "0"], "--n-psi must be an integer >= 1"),
+        (["analyse", "--rule", "lenient"], "invalid choice: 'lenient'"),
         (["figures"], "the following arguments are required: --out"),
         (["rotate"], "invalid choice: 'rotate'"),
     ],
