@@ -240,3 +240,31 @@ def test_hover_quadratic_certificates_survive_an_independent_adversary(cg):
     assert sup_ball <= res.alpha * (1 + 1e-9), "a start inside lambda0 has W above the level"
     assert max_dw < 0, "W' >= 0 found on the band by differential evolution"
     assert _worst_start_peak(f, res, n_periods=20.0, n_dir=32, rounds=3) < 1.0
+
+
+def test_band_search_finds_the_closed_form_maximum_of_pulsed_growth():
+    """On pulsed_growth (a = 0.5, b = 2, k = 1, A = 1) the band's largest W' has a closed form:
+    W' = 2 p x^2 (a - k x^2) is largest at x^2 = a / (2 k) and p = exp(2 b) (psi = 270 deg),
+    where the band reaches (its level x^2 = alpha / p = exp(-4 b) is below a / 2k):
+    max W' = exp(2 b) a^2 / (2 k)."""
+    from rotorlyap.methods.lyapunov import band_max_dw
+
+    s = pulsed_growth()
+    a, b, k = 0.5, 2.0, 1.0
+    alpha = np.exp(-2 * b)
+    ext = band_max_dw(s.f, s.W, s.dW, alpha, 1.0, scales=[1.0], psi=np.arange(24) * np.pi / 12)
+    exact = np.exp(2 * b) * a * a / (2 * k)
+    assert ext.value[0] == pytest.approx(exact, rel=1e-6)
+    assert np.degrees(ext.psi[0]) % 360 == pytest.approx(270.0, abs=0.1)
+    assert ext.x[0, 0] ** 2 == pytest.approx(a / (2 * k), rel=1e-4)
+
+
+def test_sphere_extremum_keeps_the_best_candidates_in_order():
+    """keep=k returns the k best refined candidates, best first."""
+    from rotorlyap.methods.sampling import sphere_extremum, unit_sphere_points
+
+    dirs = unit_sphere_points(2, 64, 0)
+    ext = sphere_extremum(lambda p, x: x[:, 0] + 0.1 * np.cos(p), np.arange(8) * np.pi / 4, 1.0,
+                          np.ones(2), dirs, per_psi=False, free_psi=True, keep=3)
+    assert ext.value.shape == (3,) and np.all(np.diff(ext.value) <= 0)
+    assert ext.value[0] == pytest.approx(1.1, abs=1e-6)

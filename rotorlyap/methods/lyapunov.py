@@ -575,7 +575,7 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
                 scales, period: float = 2 * np.pi, psi=None, w_matrix=None, per_psi: bool = False,
                 n_sphere: int = 1024, n_levels: int = 5, n_refine: int = 4, n_iter: int = 40,
                 seed: int = 0, stop_above: float | None = None, fd_step: float = 1e-4,
-                directions=None):
+                directions=None, n_polish: int = 16):
     """Largest ``W'`` on the band ``||x|| <= A, W(psi, x) >= c`` (condition (h) of the theorem).
 
     The band is searched ray by ray: along each direction ``u`` (scaled coordinates) at each
@@ -609,6 +609,10 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         Return as soon as a sample exceeds it (not with ``per_psi``).
     directions : array_like, optional
         Unit directions to sample instead of ``unit_sphere_points(n, n_sphere, seed)``.
+    n_polish : int
+        The best candidates of the sampled and refined search (one per azimuth with
+        ``per_psi``) are polished by L-BFGS-B (:func:`_polish`); without ``per_psi``, the best
+        ``n_polish``.
 
     Returns
     -------
@@ -631,11 +635,63 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     k = psi.size
     ext = sphere_extremum(
         lambda p, y: sys.dw(p, state(p, y)), psi, None, np.ones(n), dirs, per_psi=per_psi,
-        free_psi=not per_psi, period=period, shell=(np.full(k, 1e-9), np.ones(k)),
-        n_levels=n_levels, n_refine=n_refine, n_iter=n_iter,
-        stop_above=stop_above if not per_psi else None,
+        free_psi=not per_psi, period=period, shell=(np.full(k, T_MIN), np.ones(k)),
+        n_levels=n_levels, n_refine=max(n_refine, n_polish) if not per_psi else n_refine,
+        n_iter=n_iter, stop_above=stop_above if not per_psi else None,
+        keep=1 if per_psi else n_polish,
     )
-    return Extremum(ext.value, ext.psi, state(ext.psi, ext.x))
+    if stop_above is not None and not per_psi and ext.value[0] > stop_above:
+        return Extremum(ext.value[:1], ext.psi[:1], state(ext.psi[:1], ext.x[:1]))
+    value, p_best, y_best = _polish(lambda p, y: sys.dw(p, state(p, y)), ext, free_psi=not per_psi)
+    if per_psi:
+        return Extremum(value, p_best, state(p_best, y_best))
+    i = int(np.argmax(value))
+    return Extremum(value[i:i + 1], p_best[i:i + 1], state(p_best[i:i + 1], y_best[i:i + 1]))
+
+
+T_MIN = 1e-9
+"""Smallest ``t`` of the band's parametrisation ``y = t u`` (``t = 0``, the level set itself,
+would lose the direction ``u``)."""
+
+
+def _polish(fun: Function, start, *, free_psi: bool, maxiter: int = 100):
+    """Local maximisation of ``fun(psi, y)`` (``|y| = t`` in ``[0, 1]``, the direction free) from
+    each start of ``start`` (an Extremum) by L-BFGS-B, with central-difference gradients from
+    one vectorised call per iterate. The variables: ``v`` (the direction ``v / |v|``, free in
+    R^n), ``t`` (bounded) and, if ``free_psi``, ``psi``. Returns (values, psi, y), never worse
+    than the starts."""
+    from scipy.optimize import minimize
+
+    n = start.x.shape[1]
+    values, psis, ys = start.value.copy(), start.psi.copy(), start.x.copy()
+    h = 1e-6
+    for i in range(values.size):
+        t0 = float(np.linalg.norm(ys[i]))
+        if not np.isfinite(values[i]) or t0 == 0.0:
+            continue
+        z0 = np.concatenate([ys[i] / t0, [t0], [psis[i]] if free_psi else []])
+        d = z0.size
+        steps = np.eye(d) * h
+
+        def unpack(Z):
+            v = Z[:, :n]
+            u = v / np.linalg.norm(v, axis=1, keepdims=True)
+            t = np.clip(Z[:, n], T_MIN, 1.0)  # t > 0: y = t u keeps its direction
+            p = Z[:, n + 1] if free_psi else np.full(Z.shape[0], psis[i])
+            return p, u * t[:, None]
+
+        def fg(z):
+            Z = np.vstack([z, z + steps, z - steps])
+            v = np.asarray(fun(*unpack(Z)), dtype=float)
+            return -v[0], -(v[1:d + 1] - v[d + 1:]) / (2 * h)
+
+        bounds = [(None, None)] * n + [(T_MIN, 1.0)] + ([(None, None)] if free_psi else [])
+        res = minimize(fg, z0, jac=True, method="L-BFGS-B", bounds=bounds,
+                       options={"maxiter": maxiter})
+        if np.isfinite(res.fun) and -res.fun > values[i]:
+            p, y = unpack(res.x[None, :])
+            values[i], psis[i], ys[i] = -res.fun, p[0], y[0]
+    return values, psis, ys
 
 
 def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_shells, n_bisect,

@@ -249,6 +249,7 @@ def sphere_extremum(
     n_refine: int = 4,
     n_iter: int = 40,
     stop_above: float | None = None,
+    keep: int = 1,
 ) -> Extremum:
     """Sup or inf of ``fun`` over scaled spheres (or shells), sampled then refined.
 
@@ -287,6 +288,9 @@ def sphere_extremum(
         Only with ``kind="max"`` and ``per_psi=False``: return as soon as a sample exceeds
         this value (the answer is then a lower bound of the max, enough to decide that a
         condition ``max <= stop_above`` fails).
+    keep : int
+        Only with ``per_psi=False``: return the best ``keep`` refined candidates, best first
+        (starts for a further local search), instead of the best one.
 
     Returns
     -------
@@ -353,5 +357,8 @@ def sphere_extremum(
         sel = np.arange(k) * n_ref + best
         # sampled optimum may beat a refined start that wandered (it cannot, but be safe)
         return Extremum(sign * val[np.arange(k), best], p1[sel], x1[sel])
+    if keep > 1:
+        order = np.argsort(-val)[:keep]
+        return Extremum(sign * val[order], p1[order], x1[order])
     best = int(np.argmax(val))
     return Extremum(np.array([sign * val[best]]), np.array([p1[best]]), x1[best][None, :])
