@@ -431,26 +431,7 @@ def technical_stability(
     ).value[0])
 
     # step 5: lambda0_j = largest radius whose ball has sup W < alpha
-    radii = A_used * np.arange(1, n_radii + 1) / n_radii
-    sup_w = np.empty((n_psi, n_radii))
-    for i, radius in enumerate(radii):
-        sup_w[:, i] = sphere_extremum(sys.w, psi, radius, scales, dirs, **common).value
-    running = np.maximum.accumulate(sup_w, axis=1)
-    reach = running >= alpha
-    first = np.where(reach.any(axis=1), np.argmax(reach, axis=1), n_radii)
-    lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
-    hi = np.where(first < n_radii, radii[np.minimum(first, n_radii - 1)], A_used)
-    todo = first < n_radii
-    for _ in range(n_bisect):
-        if not todo.any():
-            break
-        mid = 0.5 * (lo + hi)
-        s = np.full(n_psi, np.inf)
-        s[todo] = sphere_extremum(sys.w, psi[todo], mid[todo], scales, dirs, **common).value
-        below = s < alpha
-        lo = np.where(todo & below, mid, lo)
-        hi = np.where(todo & ~below, mid, hi)
-    lambda0 = np.where(todo, lo, A_used)
+    lambda0 = _start_radii(sys, psi, A_used, alpha, scales, dirs, common, n_radii, n_bisect)
 
     # step 6: max W' on the shell lambda0_j < ||x|| <= A
     ext = sphere_extremum(
@@ -467,6 +448,32 @@ def technical_stability(
         lambda0=lambda0, max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period,
         step3_max_dW=step3, tol=tol, message=message, reading=reading, n_evaluations=sys.count,
     )
+
+
+def _start_radii(sys, psi, A_used, level, scales, dirs, common, n_radii, n_bisect) -> np.ndarray:
+    """Step 5: at each azimuth the largest radius (at most ``A_used``) whose ball has
+    ``sup W < level``: a scan of ``n_radii`` spheres, then ``n_bisect`` bisection steps."""
+    n_psi = psi.size
+    radii = A_used * np.arange(1, n_radii + 1) / n_radii
+    sup_w = np.empty((n_psi, n_radii))
+    for i, radius in enumerate(radii):
+        sup_w[:, i] = sphere_extremum(sys.w, psi, radius, scales, dirs, **common).value
+    running = np.maximum.accumulate(sup_w, axis=1)
+    reach = running >= level
+    first = np.where(reach.any(axis=1), np.argmax(reach, axis=1), n_radii)
+    lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
+    hi = np.where(first < n_radii, radii[np.minimum(first, n_radii - 1)], A_used)
+    todo = first < n_radii
+    for _ in range(n_bisect):
+        if not todo.any():
+            break
+        mid = 0.5 * (lo + hi)
+        s = np.full(n_psi, np.inf)
+        s[todo] = sphere_extremum(sys.w, psi[todo], mid[todo], scales, dirs, **common).value
+        below = s < level
+        lo = np.where(todo & below, mid, lo)
+        hi = np.where(todo & ~below, mid, hi)
+    return np.where(todo, lo, A_used)
 
 
 def _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect, *, A_max=None):
@@ -782,26 +789,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         lam_max = _extreme_eigenvalues(w_matrix, psi)[1]
         lambda0 = np.minimum(np.sqrt(c / lam_max), A_used)
     else:
-        radii = A_used * np.arange(1, n_radii + 1) / n_radii
-        sup_w = np.empty((n_psi, n_radii))
-        for i, radius in enumerate(radii):
-            sup_w[:, i] = sphere_extremum(sys.w, psi, radius, scales, dirs, **common).value
-        running = np.maximum.accumulate(sup_w, axis=1)
-        reach = running >= c
-        first = np.where(reach.any(axis=1), np.argmax(reach, axis=1), n_radii)
-        lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
-        hi = np.where(first < n_radii, radii[np.minimum(first, n_radii - 1)], A_used)
-        todo = first < n_radii
-        for _ in range(n_bisect):
-            if not todo.any():
-                break
-            mid = 0.5 * (lo + hi)
-            sw = np.full(n_psi, np.inf)
-            sw[todo] = sphere_extremum(sys.w, psi[todo], mid[todo], scales, dirs, **common).value
-            below = sw < c
-            lo = np.where(todo & below, mid, lo)
-            hi = np.where(todo & ~below, mid, hi)
-        lambda0 = np.where(todo, lo, A_used)
+        lambda0 = _start_radii(sys, psi, A_used, c, scales, dirs, common, n_radii, n_bisect)
     worst = max(worst, float(ext.value.max()))
     certified = worst <= need
     stable = (lambda0 > 0) & certified
