@@ -17,8 +17,8 @@ The results equal the numpy path to round-off (about 1e-15 relative; a test chec
 the operations are the same, in the same order, except the sums over stations (BLAS in
 the numpy path) and the ``sin``/``cos``/``atan2`` of the C library instead of numpy's.
 
-Which path runs
----------------
+When the kernels apply
+----------------------
 :func:`rotorlyap.jit.use_compiled` (the environment variable ``ROTORLYAP_KERNEL``) at the
 construction of a blade's equations; the kernels apply to blades whose airfoil is tabulated
 (:class:`rotorlyap.model.airfoil.Airfoil` with ``table_size > 0``, the default); other
