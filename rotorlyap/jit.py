@@ -11,10 +11,12 @@ computed alone, so the numbers do not depend on the number of threads.
 
 Which path runs
 ---------------
-The environment variable ``ROTORLYAP_KERNEL`` chooses, when the package is imported:
-``"compiled"`` (default) runs the compiled kernels, ``"numpy"`` the numpy path everywhere
-(for comparison, or on a machine where numba does not install). Without numba the numpy
-path runs whatever the variable says.
+The environment variable ``ROTORLYAP_KERNEL`` chooses: ``"compiled"`` (default) runs the
+compiled kernels, ``"numpy"`` the numpy path everywhere (for comparison, or on a machine where
+numba does not install). It is read where a path is chosen: when a blade's equations are built
+(:class:`rotorlyap.model.equations.BladeEquations` keeps its choice), and at each evaluation of
+a tabulated steady motion or of a periodic Liapunov function. Without numba the numpy path
+runs whatever the variable says.
 """
 
 from __future__ import annotations

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..methods.examples import PeriodicSystem
+from ..methods.examples import PeriodicSystem, pulsed_growth
 from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
 from ..methods.simulation import simulate
 from .style import finish, subplots
@@ -836,8 +836,8 @@ class RuleComparisonData:
     ----------
     paper, sound : TechnicalStabilityResult
         The engine's results with ``rule="paper"`` and ``rule="sound"``.
-    growth, saturation : float
-        ``a`` and ``k`` of :func:`rotorlyap.methods.examples.pulsed_growth` (``W' > 0`` for
+    growth, pulse, saturation : float
+        ``a``, ``b`` and ``k`` of :func:`rotorlyap.methods.examples.pulsed_growth` (``W' > 0`` for
         ``x**2 < a / k``).
     level_radius : numpy.ndarray
         Inner boundary of the band ``W >= alpha`` at :attr:`psi_fine_deg` (scaled norm).
@@ -852,6 +852,7 @@ class RuleComparisonData:
     paper: TechnicalStabilityResult
     sound: TechnicalStabilityResult
     growth: float
+    pulse: float
     saturation: float
     level_radius: np.ndarray
     psi_fine_deg: np.ndarray
@@ -876,8 +877,11 @@ class RuleComparisonData:
                 f"{self.sound.band_max_dW:.2f}")
 
     def facts(self, prefix: str = "ch2") -> dict:
-        """Glue values: the paper's count, the motions' largest ``||x|| / A``, the band's ``W'``."""
-        return {f"{prefix}_cx_n_paper": int(self.paper.stable.sum()),
+        """Glue values: the system's parameters and ``A``, the paper's count, the motions'
+        largest ``||x|| / A``, the band's ``W'``."""
+        return {f"{prefix}_cx_a": self.growth, f"{prefix}_cx_b": self.pulse,
+                f"{prefix}_cx_k": self.saturation, f"{prefix}_cx_A": self.paper.A_requested,
+                f"{prefix}_cx_n_paper": int(self.paper.stable.sum()),
                 f"{prefix}_cx_n_psi": int(self.paper.psi.size),
                 f"{prefix}_cx_max_ratio": round(self.max_ratio, 2),
                 f"{prefix}_cx_band_max": round(float(self.sound.band_max_dW), 2),
@@ -890,10 +894,11 @@ class RuleComparisonData:
                 "certified_sound": self.sound.stable.astype(int)}
 
 
-def rule_comparison_data(system: PeriodicSystem, growth: float, saturation: float, *, A: float = 1.0,
-                         n_psi: int = 24, n_periods: float = 3.0) -> RuleComparisonData:
-    """Run both rules on ``system`` (a :func:`~rotorlyap.methods.examples.pulsed_growth`) and
-    simulate a motion from ``0.99 lambda0_j`` at every azimuth the paper's rule certifies."""
+def rule_comparison_data(growth: float = 0.5, pulse: float = 2.0, saturation: float = 1.0, *,
+                         A: float = 1.0, n_psi: int = 24, n_periods: float = 3.0) -> RuleComparisonData:
+    """Run both rules on :func:`~rotorlyap.methods.examples.pulsed_growth` with these parameters
+    and simulate a motion from ``0.99 lambda0_j`` at every azimuth the paper's rule certifies."""
+    system = pulsed_growth(growth=growth, pulse=pulse, saturation=saturation)
     kw = dict(scales=np.ones(system.dim), n_psi=n_psi, dW=system.dW, period=system.period)
     paper = technical_stability(system.f, system.W, A, rule="paper", **kw)
     sound = technical_stability(system.f, system.W, A, rule="sound", **kw)
@@ -907,8 +912,8 @@ def rule_comparison_data(system: PeriodicSystem, growth: float, saturation: floa
                        paper.psi[j], n_periods, period=system.period, points_per_period=180)
         norms.append(sim.norm[:, 0])
         psi_rel = (sim.psi - sim.psi[0]) / system.period
-    return RuleComparisonData(paper=paper, sound=sound, growth=float(growth), saturation=float(saturation),
-                              level_radius=level, psi_fine_deg=np.degrees(psi_fine),
+    return RuleComparisonData(paper=paper, sound=sound, growth=float(growth), pulse=float(pulse),
+                              saturation=float(saturation), level_radius=level, psi_fine_deg=np.degrees(psi_fine),
                               sim_psi=psi_rel, sim_norm=np.stack(norms, axis=1))
 
 

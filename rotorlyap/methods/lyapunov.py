@@ -709,15 +709,19 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
     n_psi = psi.size
     n = scales.size
 
+    if w_matrix is not None:  # W = r^2 W(unit): its extrema on every sphere from two numbers
+        unit_min = _min_over_period(lambda p: _extreme_eigenvalues(w_matrix, p)[0], period)
+        unit_size = float(np.max(np.abs(_extreme_eigenvalues(w_matrix, psi))))
+
     def alpha_of(r: float) -> float:
         if w_matrix is not None:
-            return r * r * _min_over_period(lambda p: _extreme_eigenvalues(w_matrix, p)[0], period)
+            return r * r * unit_min
         return float(sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False,
                                      free_psi=True, **common).value[0])
 
     def w_size(r: float) -> float:
         if w_matrix is not None:
-            return r * r * float(np.max(np.abs(_extreme_eigenvalues(w_matrix, psi))))
+            return r * r * unit_size
         return float(sphere_extremum(lambda p, x: np.abs(sys.w(p, x)), psi, r, scales, dirs,
                                      per_psi=False, n_refine=1, n_iter=0, period=period).value[0])
 

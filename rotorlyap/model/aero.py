@@ -108,6 +108,25 @@ class StripAerodynamics:
         self._inflow_uniform_in_psi = bool(np.all(b == 0.0))
         self._mu_VR = mu * VR
 
+    def kernel_inputs(self) -> tuple[FloatArray, float, bool, bool]:
+        """The numbers of the compiled kernels (:mod:`rotorlyap.model.compiled`).
+
+        Returns
+        -------
+        stations : numpy.ndarray, shape (11, n_stations)
+            Rows: radius from the pitch hinge (m); the wind point's lever arms ``y``, ``z`` (m);
+            the aerodynamic centre's lever arms ``y``, ``z`` (m); pretwist (rad); the force,
+            moment and pitch-damping factors; the inflow coefficients ``a``, ``b`` (m/s).
+        free_stream : float
+            ``mu Omega R``, m/s.
+        pitch_damped, inflow_uniform : bool
+            The pitch-damping couple is on; the inflow does not depend on ``psi``.
+        """
+        rows = (self._rx, self._wy, self._wz, self._ry, self._rz, self._phi, self._qn, self._mn,
+                self._dn, self._inflow_a, self._inflow_b)
+        stations = np.ascontiguousarray(np.concatenate(rows, axis=1).T)
+        return stations, float(self._mu_VR), bool(self._pitch_damped), bool(self._inflow_uniform_in_psi)
+
     def wind(self, psi: FloatArray, T: FloatArray):
         """In-plane air velocity relative to the sections' wind points, B components, m/s.
 

@@ -350,19 +350,25 @@ class Airfoil:
         else:
             object.__setattr__(self, "_table", ())
 
-    def table_arrays(self) -> NDArray[np.float64] | None:
-        """The table of :meth:`coefficients` as one array, or None with ``table_size = 0``.
+    def table_rows(self) -> NDArray[np.float64] | None:
+        """The table of :meth:`coefficients` as one read-only array, one row per grid point, or
+        None with ``table_size = 0``. Made at the first call and kept.
 
         Returns
         -------
-        numpy.ndarray, shape (6, table_size) or None
-            Rows: values and increments of cl, cd and cm on the grid
+        numpy.ndarray, shape (table_size, 6) or None
+            Columns: value and increment of cl, cd and cm on the grid
             ``-pi + 2 pi k / table_size`` (the compiled kernels of
-            :mod:`rotorlyap.model.compiled` interpolate in it).
+            :mod:`rotorlyap.model.compiled` interpolate in it; one lookup reads one row).
         """
         if not self._table:
             return None
-        return np.ascontiguousarray(np.stack([a for pair in self._table for a in pair]))
+        rows = self.__dict__.get("_table_rows")
+        if rows is None:
+            rows = np.ascontiguousarray(np.stack([a for pair in self._table for a in pair], axis=1))
+            rows.flags.writeable = False
+            object.__setattr__(self, "_table_rows", rows)
+        return rows
 
     @property
     def reverse_cl_max(self) -> float:

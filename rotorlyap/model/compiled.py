@@ -75,21 +75,17 @@ class KernelData:
 
     __slots__ = ("P", "scalars", "stations", "table")
 
-    def __init__(self, eq: BladeEquations):
+    def __init__(self, eq: BladeEquations, table: FloatArray):
         p = eq.params
-        aero = eq.aero
-        table = p.airfoil.table_arrays()
+        stations, free_stream, pitch_damped, uniform = eq.aero.kernel_inputs()
         self.P = np.asarray(eq.parameter_values, dtype=np.float64)
-        damp = eq._damping * eq.omega
+        damp = np.array([p.flap_damping, p.lag_damping, p.pitch_damping]) * eq.omega
         self.scalars = np.array([
-            eq.omega, damp[0], damp[1], damp[2], aero._mu_VR, float(aero.active),
-            float(aero._pitch_damped), float(p.twist != 0.0), float(aero._inflow_uniform_in_psi),
-            float(table.shape[1]), float(eq.has_cyclic)])
-        self.stations = np.ascontiguousarray(np.stack([
-            aero._rx[:, 0], aero._wy[:, 0], aero._wz[:, 0], aero._ry[:, 0], aero._rz[:, 0],
-            aero._phi[:, 0], aero._qn[:, 0], aero._mn[:, 0], aero._dn[:, 0],
-            aero._inflow_a[:, 0], aero._inflow_b[:, 0]]))
-        self.table = np.ascontiguousarray(table.T)  # one row per grid point: one cache line
+            eq.omega, damp[0], damp[1], damp[2], free_stream, float(eq.aero.active),
+            float(pitch_damped), float(p.twist != 0.0), float(uniform), float(table.shape[0]),
+            float(eq.has_cyclic)])
+        self.stations = stations
+        self.table = table
 
 
 def kernel_data(eq: BladeEquations) -> KernelData | None:
@@ -97,10 +93,9 @@ def kernel_data(eq: BladeEquations) -> KernelData | None:
     numba missing, or an airfoil without a table)."""
     if not use_compiled():
         return None
-    table_arrays = getattr(eq.params.airfoil, "table_arrays", None)
-    if table_arrays is None or table_arrays() is None:
-        return None
-    return KernelData(eq)
+    table_rows = getattr(eq.params.airfoil, "table_rows", None)
+    table = None if table_rows is None else table_rows()
+    return None if table is None else KernelData(eq, table)
 
 
 def _controls(eq: BladeEquations) -> FloatArray:
@@ -310,10 +305,14 @@ def _energy_rate_parallel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, o
                            c * n // n_chunks, (c + 1) * n // n_chunks)
 
 
-def _chunks(n: int) -> int:
-    """Chunks of a batch of ``n`` states: 0 (one thread) below PARALLEL_MIN_STATES."""
+def _run(serial, parallel, n: int, args: tuple) -> None:
+    """Run a kernel over ``n`` states: ``serial(*args, 0, n)`` on one thread below
+    PARALLEL_MIN_STATES states, else ``parallel(*args, chunks)`` over every thread."""
     k = threads()
-    return 0 if n < PARALLEL_MIN_STATES or k < 2 else 4 * k
+    if n < PARALLEL_MIN_STATES or k < 2:
+        serial(*args, 0, n)
+    else:
+        parallel(*args, 4 * k)
 
 
 # --------------------------------------------------------------------------------------
@@ -327,11 +326,7 @@ def rhs(eq: BladeEquations, data: KernelData, psi: FloatArray, z: FloatArray) ->
     args = (psi if psi.flags.c_contiguous else np.ascontiguousarray(psi),
             z if z.flags.c_contiguous else np.ascontiguousarray(z),
             _controls(eq), data.P, data.scalars, data.stations, data.table, out)
-    chunks = _chunks(n)
-    if chunks:
-        _rhs_parallel(*args, chunks)
-    else:
-        _rhs_range(*args, 0, n)
+    _run(_rhs_range, _rhs_parallel, n, args)
     return out
 
 
@@ -356,9 +351,5 @@ def energy_rate(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatA
     args = (c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
             c(dxi, dtype=np.float64), c(ps, dtype=np.float64), _controls(eq), data.P,
             data.scalars, data.stations, data.table, bool(constant), out)
-    chunks = _chunks(n)
-    if chunks:
-        _energy_rate_parallel(*args, chunks)
-    else:
-        _energy_rate_range(*args, 0, n)
+    _run(_energy_rate_range, _energy_rate_parallel, n, args)
     return out
