@@ -82,9 +82,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="6 norm scales a_i in deg and deg/rad, e.g. '2 2 1 2 0.5 5' (the default)")
     a.add_argument("--reading", choices=("strict", "practical"), default="strict",
                    help="strict: whole spheres (a certificate); practical: the 12 signed axes only (an indicator)")
-    a.add_argument("--rule", choices=("paper", "sound"), default="paper",
-                   help="paper: step 6 at each start azimuth (the paper's algorithm); sound: the "
-                        "theorem's (h) on the band over the whole period (a numerical certificate)")
+    a.add_argument("--rule", choices=("paper", "sound"), default=None,
+                   help="sound (default of the strict reading): the theorem's (h) on the band over "
+                        "the whole period, a numerical certificate; paper (default of the practical "
+                        "reading): step 6 at each start azimuth, the paper's algorithm")
     a.add_argument("--steady", choices=("hover", "periodic"), default="hover",
                    help="steady motion: the hover equilibrium (the paper) or the true periodic motion")
     a.add_argument("--lyapunov", choices=("energy", "quadratic"), default="energy",

@@ -56,7 +56,7 @@ def rate():
 
 def test_fig5_strict_positive_practical_zero_and_labelled(rate):
     d = rate
-    assert d.strict_label == "strict (certificate)"
+    assert d.strict_label == "strict (numerical certificate)"
     assert d.practical_label == "practical (indicator, not a certificate)"
     # the caution on the real model: W' > 0 on the sphere at every C.G., found by the search
     assert np.all(d.strict_max > 50.0)
@@ -132,7 +132,7 @@ def test_fig8_practical_reading_is_labelled_and_hover_is_indicated_stable(region
 
 def test_fig8_strict_reading_is_labelled_and_certifies_nothing_in_hover():
     reg = paper.regions_data(("forward",), (0.0,), reading="strict", n_psi=4, n_sphere=64)
-    assert reg.label == "strict (certificate)"
+    assert reg.label == "strict (numerical certificate)"
     assert not reg.stable.any()
     assert np.all(reg.A_used == 0.0)
 
@@ -232,7 +232,7 @@ def test_hover_sweep_is_the_three_cases_and_0_01_c_steps_to_0_02_c_beyond_them()
                              "ch5_sweep_lo": 0.195, "ch5_sweep_hi": 0.275}
     lines = sweep.summary().splitlines()
     assert lines[0] == "C.G. of the cases (c): forward 0.215, neutral 0.235, backward 0.255"
-    assert lines[-2:] == ["   strict: strict (certificate)", "practical: practical (indicator, not a certificate)"]
+    assert lines[-2:] == ["   strict: strict (numerical certificate)", "practical: practical (indicator, not a certificate)"]
 
 
 def test_fig4_facts_quote_a_collective_falling_as_the_cg_moves_aft_at_equal_angles(trim):
@@ -320,7 +320,7 @@ def test_hover_readings_strict_certifies_nothing_practical_every_azimuth(reading
     f = readings.facts()
     assert f["ch5_prac_stable_forward"] == 4 and f["ch5_step3_forward"] > 50
     assert 0 < f["ch5_prac_lambda0"] < 1
-    assert readings.summary().splitlines()[1].startswith("  strict (certificate): nothing certified")
+    assert readings.summary().splitlines()[1].startswith("  strict (numerical certificate): nothing certified")
 
 
 def test_search_check_the_engines_default_search_finds_the_refined_maximum(readings, rate):
@@ -530,7 +530,7 @@ def test_claims_table_has_a_row_per_claim_and_both_readings(wsph, rate7, maps, r
     sens = _synthetic_sensitivity(regions)
     table = paper.claims_table(_synthetic_convergence(), wsph, rate7, maps, flutter, threshold, sens)
     assert len(table.rows) == 7 and all(len(r) == len(paper.CLAIMS_HEADER) for r in table.rows)
-    assert table.markdown().splitlines()[0].startswith("| claim (the paper's figure numbers) | strict (certificate) |")
+    assert table.markdown().splitlines()[0].startswith("| claim (the paper's figure numbers) | strict (numerical certificate) |")
     lines = table.summary().splitlines()
     assert len(lines) == 7 and "| strict: not reproduced" in lines[1]
     assert "-0.145 / -0.097 / -0.007" in table.rows[1][3]

@@ -263,11 +263,13 @@ def scan():
     cat = np.zeros((c_, k_, m_, n_), dtype=int)
     lam = np.full((c_, k_, m_, n_), 0.1)
     aused = np.full((c_, k_, m_), 0.5)
+    astep3 = np.full((c_, k_, m_), 0.5)
 
-    def fail(c, i, j, category=2):
+    def fail(c, i, j, category=2, band=False):
         cat[keys.index(c), i, j] = category
         lam[keys.index(c), i, j] = 0.0
         aused[keys.index(c), i, j] = 0.0 if category in (2, 3) else np.nan
+        astep3[keys.index(c), i, j] = (0.3 if band else 0.0) if category in (2, 3) else np.nan
 
     for i in range(3):
         for j in (1, 2):
@@ -283,13 +285,14 @@ def scan():
     fail("quadratic", 2, 1, category=5)
     cat[cq, 2, 2] = [0, 0, 1, 1]  # step 6 fails at two azimuths
     lam[cq, 2, 0] = 0.0019
-    fail("quadratic-opt", 1, 2)
+    fail("quadratic-opt", 1, 2, band=True)  # step 3 passes, the band fails at every bound
     fail("quadratic-opt", 2, 1, category=4)
     fail("quadratic-opt", 2, 2)
     return fv.ScanData(cases=fv.CASES, mu_values=np.array([0.0, 0.1, 0.15]), psi=TWO_PI * np.arange(4) / 4,
                        keys=keys, labels=tuple(c.label for c in fv.CANDIDATES),
                        readings=tuple(c.reading for c in fv.CANDIDATES), category=cat, stable=cat == 0,
-                       lambda0=np.where(cat == 0, lam, 0.0), A_used=aused, weights=np.ones((3, 6)), messages=())
+                       lambda0=np.where(cat == 0, lam, 0.0), A_used=aused, A_step3=astep3,
+                       weights=np.ones((3, 6)), messages=())
 
 
 def test_scan_summary_counts_stable_azimuths_and_names_why_nothing_is_certified(scan):
@@ -297,6 +300,8 @@ def test_scan_summary_counts_stable_azimuths_and_names_why_nothing_is_certified(
     i = lines.index("quadratic Q = I, strict, periodic motion")
     assert lines[i + 3] == "   backward     4/0    noXi     2/2"
     assert lines[lines.index("energy, strict, periodic motion") + 1] == "   forward       s3      s3      s3"
+    j = lines.index("quadratic, optimised Q, strict, periodic motion")
+    assert lines[j + 2].split()[-1] == "band"  # the neutral C.G., optimised, mu = 0.15
     assert "(stable/step-6-fails azimuths of 4;" in lines[-2]
     assert lines[-1] == "optimised weights (forward C.G.): [1. 1. 1. 1. 1. 1.]"
 
@@ -304,7 +309,7 @@ def test_scan_summary_counts_stable_azimuths_and_names_why_nothing_is_certified(
 def test_scan_certificate_rows_give_the_certified_lambda0_range_per_advance_ratio(scan):
     rows = scan.certificate_rows()
     assert len(rows) == 6
-    assert rows[0][1:] == ("0", "0.500", "0.100", "0.130", "4 of 4")
+    assert rows[0][1:] == ("0", "0.500", "0.500", "0.100", "0.130", "4 of 4")
     assert scan.certificate_table().splitlines()[0].startswith("| function (forward C.G., strict")
     assert scan.min_certified_lambda0("quadratic", "forward") == (0.1, 0.08, 0.06)
 
@@ -321,12 +326,13 @@ def test_scan_facts_count_certified_cells_and_list_the_advance_ratios_of_each_ou
     assert (f["ch7_lam_q0"], f["ch7_lam_q25"], f["ch7_lam_o0"], f["ch7_lam_o_min"], f["ch7_lam_o_max"]) == \
         (0.1, 0.06, 0.3, 0.2, 0.25)
     assert f["ch7_deg_o0"] == round(0.3 * 2.0, 2)
+    assert f["ch7_fwd_opt_none_mu"] == ""  # the forward C.G.'s optimised function certifies every mu
     assert (f["ch7_energy_cert"], f["ch7_energy_cells"], f["ch7_qh_fw"], f["ch7_qh_hover"]) == (0, 36, 0, 12)
     assert (f["ch7_ncert_q_bwd"], f["ch7_ncert_o_bwd"], f["ch7_lam_q0_bwd"]) == (6, 4, 0.0019)
-    assert (f["ch7_bwd_cert_mu"], f["ch7_bwd_part_mu"], f["ch7_bwd_s3_mu"]) == ("0", "0.15", "")
-    assert f["ch7_neu_opt_s3_mu"] == "0.15"
-    assert "backward, Q = I: all azimuths at mu = [0.] ; some at [0.15] ; step 3 failed at []" in \
-        scan.certificate_summary()
+    assert (f["ch7_bwd_cert_mu"], f["ch7_bwd_s3_mu"], f["ch7_bwd_band_mu"]) == ("0", "", "")
+    assert f["ch7_neu_opt_none_mu"] == "0.15"
+    assert ("backward, Q = I: all azimuths at mu = [0.] ; some at [0.15] ; step 3 failed at [] ; "
+            "(h) failed on the band at []") in scan.certificate_summary()
 
 
 def test_scan_figure_has_a_panel_per_candidate_and_case_and_is_closed(scan):
@@ -334,14 +340,43 @@ def test_scan_figure_has_a_panel_per_candidate_and_case_and_is_closed(scan):
     assert len(fig.axes) == 18 and _closed(fig)
 
 
+def test_rule_changes_list_the_cells_whose_verdict_or_bounds_moved():
+    """A cell changes when its azimuth count differs or A or the smallest lambda0 moves by more
+    than 0.5 %; cells without a result (-1) never count."""
+    nan = np.nan
+    d = fv.RuleChanges(labels=("quadratic Q = I, forward C.G.", "quadratic Q = I, backward C.G."),
+                       mu_values=np.array([0.0, 0.2]), n_paper=np.array([[24, 24], [24, 8]]),
+                       n_sound=np.array([[24, 24], [24, 0]]), A_paper=np.array([[0.56, 0.42], [0.0476, 0.3]]),
+                       A_sound=np.array([[0.5601, 0.42], [0.0427, 0.0]]),
+                       lambda0_paper=np.array([[0.085, 0.05], [0.0019, 0.01]]),
+                       lambda0_sound=np.array([[0.085, 0.05], [0.0015, 0.0]]), n_psi=24)
+    np.testing.assert_array_equal(d.changed(), [[False, False], [True, True]])
+    assert d.rows()[1] == ("quadratic Q = I, backward C.G.", "0.2", "8 -> 0", "0.300 -> 0.000", "0.01 -> -")
+    assert d.facts() == {"ch7_rule_changed": 2, "ch7_rule_cells": 4, "ch7_rule_lost": 1, "ch7_rule_gained": 0}
+    assert d.summary().splitlines()[-1] == ("changed: 2 of 4 cells; certified by the paper's rule only: 1; "
+                                            "never the reverse: True")
+    assert d.markdown().splitlines()[0].startswith("| function, case | mu | azimuths certified (of 24) |")
+    e = fv.RuleChanges(labels=("x",), mu_values=np.array([0.1]), n_paper=np.array([[-1]]),
+                       n_sound=np.array([[-1]]), A_paper=np.array([[nan]]), A_sound=np.array([[nan]]),
+                       lambda0_paper=np.zeros((1, 1)), lambda0_sound=np.zeros((1, 1)), n_psi=24)
+    assert not e.changed().any()
+
+
 def test_search_check_reports_the_largest_relative_change_in_percent():
+    """Over both finer searches; a cell certified by one search only is an infinite change."""
     d = fv.SearchCheck(case="forward", keys=("quadratic", "quadratic-opt"), mu_values=np.array([0.0, 0.25]),
-                       n_sphere=1024, A=np.array([[0.5595, 0.5595], [0.1985, 0.1985]]),
-                       min_lambda0=np.array([[0.0848, 0.0848], [0.0541, 0.0540]]),
-                       n_stable=np.array([[24, 24], [20, 20]]))
+                       n_sphere=1024, n_iter=160, A=np.array([[0.5595, 0.5595, 0.5595], [0.1985, 0.1985, 0.1984]]),
+                       min_lambda0=np.array([[0.0848, 0.0848, 0.0848], [0.0541, 0.0540, 0.0541]]),
+                       n_stable=np.array([[24, 24, 24], [20, 20, 20]]))
     assert d.facts() == {"ch7_conv": round(100 * (1 - 0.0540 / 0.0541), 1)}
-    assert d.summary().splitlines()[0] == ("quadratic      mu = 0.00: A1 0.5595 -> 0.5595, "
-                                           "min lambda0 0.0848 -> 0.0848, azimuths 24 -> 24")
+    lines = d.summary().splitlines()
+    assert lines[0] == "scan -> n_sphere 1024 -> n_iter 160"
+    assert lines[1] == ("quadratic      mu = 0.00: A 0.5595 -> 0.5595 -> 0.5595, "
+                        "min lambda0 0.0848 -> 0.0848 -> 0.0848, azimuths 24 -> 24 -> 24")
+    e = fv.SearchCheck(case="forward", keys=("quadratic",), mu_values=np.array([0.25]), n_sphere=1024,
+                       n_iter=160, A=np.array([[0.0, 0.0, 0.1]]), min_lambda0=np.array([[0.0, 0.0, 0.01]]),
+                       n_stable=np.array([[0, 0, 24]]))
+    assert np.isinf(e.relative_change[0])
 
 
 # --------------------------------------------------------------------------------------

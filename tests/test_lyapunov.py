@@ -45,7 +45,7 @@ def test_step3_reduces_A_to_the_radius_where_dW_changes_sign():
     assert res.alpha == pytest.approx(1.0, rel=REL)
     np.testing.assert_allclose(res.lambda0, 1 / np.sqrt(2), rtol=REL)
     assert res.stable.all()
-    assert "reduced A" in res.message
+    assert "from 1.5 to 1" in res.message
 
 
 def test_lambda0_follows_the_azimuth_dependence_of_W_with_scaled_norm():

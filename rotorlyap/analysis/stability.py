@@ -71,7 +71,10 @@ def blade_stability(
         scaled coordinates for the practical reading (e.g.
         :data:`rotorlyap.conventions.PAPER_TEST_DISTURBANCES`).
     **engine_options
-        Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ``n_radii``, ...).
+        Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ``n_radii``,
+        ``rule``, ...). The strict reading's default rule is ``"sound"`` (the theorem's (h)
+        over the whole period: a numerical certificate); ``rule="paper"`` gives the paper's
+        per-azimuth step 6.
 
     Returns
     -------
@@ -105,7 +108,8 @@ def blade_stability(
         fun = lyapunov(blade, motion)
     f = getattr(fun, "f", None) or disturbed_rhs(blade, motion)
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
-    if engine_options.get("rule") == "sound" and isinstance(fun, QuadraticFunction):
+    rule = engine_options.get("rule") or ("paper" if test_disturbances is not None else "sound")
+    if rule == "sound" and isinstance(fun, QuadraticFunction):
         # W = x^T P x: its extrema on the engine's spheres in closed form
         engine_options.setdefault("w_matrix", lambda psi: a[:, None] * fun.P(psi) * a[None, :])
     return technical_stability(

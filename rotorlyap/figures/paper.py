@@ -65,7 +65,7 @@ __all__ = [
 
 #: How each reading is labelled everywhere in the book.
 READING_LABELS = {
-    "strict": "strict (certificate)",
+    "strict": "strict (numerical certificate)",
     "practical": "practical (indicator, not a certificate)",
 }
 
@@ -2271,7 +2271,7 @@ def figure_convergence(data: ConvergenceData, figsize=(14, 4.0)):
 
 
 #: Header of chapter 6's claims table.
-CLAIMS_HEADER = ("claim (the paper's figure numbers)", "strict (certificate)",
+CLAIMS_HEADER = ("claim (the paper's figure numbers)", "strict (numerical certificate)",
                  "practical (indicator, not a certificate)", "evidence", "where we differ, and why")
 
 

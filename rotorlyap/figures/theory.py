@@ -626,8 +626,12 @@ class ConvergenceData:
         return {f"{prefix}_conv_dev": round(100 * self.largest_deviation, 2)}
 
 
-def convergence_data(system: PeriodicSystem, A: float, n_sphere_values, *, n_psi: int = 24) -> ConvergenceData:
+def convergence_data(system: PeriodicSystem, A: float, n_sphere_values, *, n_psi: int = 24,
+                     rule: str = "paper") -> ConvergenceData:
     """Run :func:`technical_stability` at several sampling resolutions, with and without refinement.
+
+    By default with the paper's rule (``rule="paper"``): the study is of the sphere search of
+    steps 3-6, which both rules share.
 
     Parameters
     ----------
@@ -639,13 +643,16 @@ def convergence_data(system: PeriodicSystem, A: float, n_sphere_values, *, n_psi
         Quasi-random directions per sphere, in increasing order (the last is the reference).
     n_psi : int
         Azimuths of every run.
+    rule : {"paper", "sound"}
+        Passed on to :func:`technical_stability`.
     """
     rows, raw = [], []
     for ns in n_sphere_values:
-        r = technical_stability(system.f, system.W, A, dim=system.dim, dW=system.dW, n_psi=n_psi, n_sphere=int(ns))
+        r = technical_stability(system.f, system.W, A, dim=system.dim, dW=system.dW, n_psi=n_psi,
+                                n_sphere=int(ns), rule=rule)
         rows.append((r.A, r.alpha, r.lambda0.min(), r.lambda0.mean()))
         q = technical_stability(system.f, system.W, A, dim=system.dim, dW=system.dW, n_psi=n_psi,
-                                n_sphere=int(ns), n_iter=0)
+                                n_sphere=int(ns), n_iter=0, rule=rule)
         raw.append((q.A, q.lambda0.mean()))
     rows, raw = np.array(rows), np.array(raw)
     return ConvergenceData(np.asarray(n_sphere_values), rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3],

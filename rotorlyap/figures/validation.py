@@ -43,6 +43,7 @@ from ..analysis.functions import energy_function, optimised_quadratic_function, 
 from ..analysis.stability import blade_stability
 from ..conventions import DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
 from ..errors import NotAsymptoticallyStableError, PeriodicMotionError
+from ..methods.lyapunov import technical_stability
 from ..methods.sampling import sphere_extremum, unit_sphere_points
 from ..methods.simulation import scaled_norm, simulate
 from ..methods.validation import last_revolution, long_run, validate
@@ -66,6 +67,7 @@ __all__ = [
     "QuadraticData", "quadratic_data",
     "OriginData", "origin_data", "plot_origin", "figure_origin",
     "ScanData", "scan_data", "plot_scan", "figure_scan", "scan_legend_handles",
+    "SCAN_OPTIONS", "CellSystem", "cell_system", "RuleChanges", "rule_changes",
     "SearchCheck", "search_check",
     "validation_data", "confusion_rows", "plot_validation",
     "ValidationData", "validation_set", "figure_validation",
@@ -81,6 +83,11 @@ MU_FLOQUET = tuple(float(m) for m in np.round(np.arange(0.0, 0.2501, 0.025), 3))
 
 #: Advance ratios of the scans (each costs a sphere search per azimuth and function).
 MU_SCAN = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
+
+#: The engine's resolution in the chapter's scan (:func:`scan_data`): 24 azimuths and 256
+#: quasi-random directions per sphere (with the structured ones). The falsifier tests attack
+#: the certificates of exactly these runs.
+SCAN_OPTIONS = {"n_psi": 24, "n_sphere": 256}
 
 #: Short names of the cases in the chapter's glue names (``ch7_ncert_q_neu``, ...).
 _CASE_TAGS = {"forward": "fw", "neutral": "neu", "backward": "bwd"}
@@ -789,10 +796,10 @@ CANDIDATES = (
 
 #: Outcome of one (azimuth, advance ratio) cell; the first four as in the Fig. 8 chapter.
 SCAN_CATEGORY_NAMES = (
-    "stable: step 6 holds",
-    "step 6 fails at this azimuth",
-    "step 3 failed elsewhere (A1 = 0); W' <= 0 here on ||x|| = A",
-    "step 3 failed (A1 = 0) and W' > 0 here on ||x|| = A",
+    "stable: (h) holds (strict: over the whole period)",
+    "paper's step 6 fails at this azimuth (practical)",
+    "nothing certified (A = 0); W' <= 0 here on ||x|| = A",
+    "nothing certified (A = 0); W' > 0 here on ||x|| = A",
     "no quadratic function: linearisation unstable",
     "no periodic motion found",
 )
@@ -822,7 +829,11 @@ class ScanData:
     lambda0 : numpy.ndarray
         (c, k, m, n); 0 where no result.
     A_used : numpy.ndarray
-        Bound after step 3, (c, k, m); NaN where no result.
+        The certified bound ``A`` (0 where nothing is certified), (c, k, m); NaN where no result.
+    A_step3 : numpy.ndarray
+        Step 3's bound ``A1`` (``W' <= 0`` on the sphere itself), (c, k, m); NaN where no
+        result. The sound rule's ``A`` is at most this: it shrinks ``A`` until (h) holds on the
+        whole band.
     weights : numpy.ndarray
         Optimised diagonal weights ``w_i`` (``Q = diag(w / a**2)``), per case, (k, 6); NaN
         where none exists.
@@ -842,6 +853,7 @@ class ScanData:
     stable: np.ndarray
     lambda0: np.ndarray
     A_used: np.ndarray
+    A_step3: np.ndarray
     weights: np.ndarray
     messages: tuple
     results: dict = field(default_factory=dict, compare=False, repr=False)
@@ -867,53 +879,61 @@ class ScanData:
 
     def summary(self) -> str:
         """Per candidate, case and advance ratio: ``stable/step-6-fails`` azimuth counts, or why
-        nothing is certified (``s3``, ``noQ``, ``noXi``); the optimised weights of the forward
-        C.G."""
+        nothing is certified (``s3``, ``band``, ``noQ``, ``noXi``); the optimised weights of the
+        forward C.G."""
         lines = [_join("mu:", self.mu_values)]
-        why = {2: "s3", 3: "s3", 4: "noQ", 5: "noXi"}
+        why = {4: "noQ", 5: "noXi"}
         for c in range(len(self.keys)):
             lines.append(self.labels[c])
             for i, case in enumerate(self.cases):
                 cells = []
                 for j in range(self.mu_values.size):
                     counts = np.bincount(self.category[c, i, j], minlength=6)
-                    cells.append("/".join(str(int(v)) for v in counts[[0, 1]]) if counts[:2].sum()
-                                 else why[int(np.argmax(counts))])
+                    if counts[:2].sum():
+                        cells.append("/".join(str(int(v)) for v in counts[[0, 1]]))
+                    else:
+                        k = int(np.argmax(counts))
+                        cells.append(why.get(k) or ("s3" if not self.A_step3[c, i, j] > 0 else "band"))
                 lines.append(_join(f"   {case:9s}", "  ".join(f"{v:>6s}" for v in cells)))
-        lines.append(f"(stable/step-6-fails azimuths of {self.psi.size}; s3 = step 3 failed; "
+        lines.append(f"(stable/step-6-fails azimuths of {self.psi.size}; s3 = step 3 failed, W' > 0 on "
+                     "every sphere; band = (h) failed on the band for every bound; "
                      "noQ = no quadratic function; noXi = no periodic motion)")
         lines.append(_join("optimised weights (forward C.G.):", np.round(self.weights[self.cases.index("forward")], 3)))
         return "\n".join(lines)
 
     def certificate_rows(self, case: str = "forward", keys: tuple = ("quadratic", "quadratic-opt")) -> list:
-        """Rows of the certificate table: function, mu, ``A1`` after step 3, smallest and
-        largest certified ``lambda0`` (three decimals), azimuths certified."""
+        """Rows of the certificate table: function, mu, ``A1`` of step 3, the certified bound
+        ``A``, smallest and largest certified ``lambda0`` (three decimals), azimuths certified."""
         i, rows = self.cases.index(case), []
         for key in keys:
             c = self.keys.index(key)
             for j, mu in enumerate(self.mu_values):
                 lam, ok = self.lambda0[c, i, j], self.stable[c, i, j]
-                rows.append((self.labels[c], f"{mu:g}", f"{self.A_used[c, i, j]:.3f}",
+                rows.append((self.labels[c], f"{mu:g}", f"{self.A_step3[c, i, j]:.3f}", f"{self.A_used[c, i, j]:.3f}",
                              f"{lam[ok].min():.3f}" if ok.any() else "-", f"{lam[ok].max():.3f}" if ok.any() else "-",
                              f"{int(ok.sum())} of {ok.size}"))
         return rows
 
     def certificate_table(self, case: str = "forward") -> str:
         """:meth:`certificate_rows` as a Markdown table."""
-        return markdown_table((f"function ({case} C.G., strict, about the periodic motion)", "mu", "A1 after step 3",
-                               "min lambda0", "max lambda0", "azimuths certified"), self.certificate_rows(case))
+        return markdown_table((f"function ({case} C.G., strict, about the periodic motion)", "mu",
+                               "A1 (step 3)", "A certified", "min lambda0", "max lambda0",
+                               "azimuths certified"), self.certificate_rows(case))
 
     def _backward_mu(self) -> tuple:
         """Advance ratios of the backward C.G. with ``Q = I``: every azimuth certified, some,
-        step 3 failed; and of the neutral C.G., optimised: step 3 failed."""
+        step 3 failed (``W' > 0`` on every sphere), (h) failed on the band for every bound; and
+        of the neutral C.G., optimised: nothing certified."""
         cq, co = self.keys.index("quadratic"), self.keys.index("quadratic-opt")
         ib, ineu = self.cases.index("backward"), self.cases.index("neutral")
         ok = self.stable[cq, ib].all(axis=1)
         part = self.stable[cq, ib].any(axis=1) & ~ok
-        s3 = np.isnan(self.A_used[cq, ib]) | (self.A_used[cq, ib] == 0)
-        s3 &= ~np.isin(self.category[cq, ib, :, 0], (4, 5))
-        s3_neu = self.A_used[co, ineu] == 0
-        return self.mu_values[ok], self.mu_values[part], self.mu_values[s3], self.mu_values[s3_neu]
+        ran = ~np.isin(self.category[cq, ib, :, 0], (4, 5))
+        s3 = ran & ~(self.A_step3[cq, ib] > 0)
+        band = ran & (self.A_step3[cq, ib] > 0) & ~(self.A_used[cq, ib] > 0)
+        none_neu = ~self.stable[co, ineu].any(axis=1)
+        mu = self.mu_values
+        return mu[ok], mu[part], mu[s3], mu[band], mu[none_neu]
 
     def _energy_sides(self) -> tuple:
         """For the energy, practical, about the periodic motion (forward C.G.): the advance
@@ -945,9 +965,10 @@ class ScanData:
                          f"{int(self.stable[co, i].sum())} of {self.stable[cq, i].size}; hover lambda0 (Q = I) "
                          f"{lam_h.min():.2g}")
             lines.append(_join("   per mu (Q = I):", self.stable[cq, i].sum(axis=1)))
-        ok, part, s3, s3_neu = self._backward_mu()
-        lines.append(_join("backward, Q = I: all azimuths at mu =", ok, "; some at", part, "; step 3 failed at", s3))
-        lines.append(_join("neutral, optimised: step 3 failed at mu =", s3_neu))
+        ok, part, s3, band, none_neu = self._backward_mu()
+        lines.append(_join("backward, Q = I: all azimuths at mu =", ok, "; some at", part, "; step 3 failed at", s3,
+                           "; (h) failed on the band at", band))
+        lines.append(_join("neutral, optimised: nothing certified at mu =", none_neu))
         return "\n".join(lines)
 
     def facts(self) -> dict:
@@ -966,8 +987,9 @@ class ScanData:
             "ch7_lam_q0": round(lam_q[0], 3),
             "ch7_lam_q25": round(lam_q[-1], 3),
             "ch7_lam_o0": round(lam_o[0], 3),
-            "ch7_lam_o_min": round(min(lam_o[1:]), 3),
-            "ch7_lam_o_max": round(max(lam_o[1:]), 3),
+            "ch7_lam_o_min": round(float(np.nanmin(lam_o[1:])), 3),
+            "ch7_lam_o_max": round(float(np.nanmax(lam_o[1:])), 3),
+            "ch7_fwd_opt_none_mu": _mu_list(self.mu_values[~self.stable[co, fwd].any(axis=1)]),
             "ch7_A_q0": round(float(self.A_used[cq, fwd, 0]), 2),
             "ch7_A_o0": round(float(self.A_used[co, fwd, 0]), 2),
             "ch7_deg_o0": round(float(lam_o[0] * np.degrees(DEFAULT_SCALES[0])), 2),
@@ -989,9 +1011,9 @@ class ScanData:
             out[f"ch7_ncert_q_{tag}"] = int(self.stable[cq, i].sum())
             out[f"ch7_ncert_o_{tag}"] = int(self.stable[co, i].sum())
             out[f"ch7_lam_q0_{tag}"] = float("%.2g" % self.lambda0[cq, i, 0][self.stable[cq, i, 0]].min())
-        ok, part, s3, s3_neu = self._backward_mu()
-        out.update({"ch7_bwd_cert_mu": _mu_list(ok), "ch7_bwd_part_mu": _mu_list(part),
-                    "ch7_bwd_s3_mu": _mu_list(s3), "ch7_neu_opt_s3_mu": _mu_list(s3_neu)})
+        ok, part, s3, band, none_neu = self._backward_mu()
+        out.update({"ch7_bwd_cert_mu": _mu_list(ok), "ch7_bwd_s3_mu": _mu_list(s3),
+                    "ch7_bwd_band_mu": _mu_list(band), "ch7_neu_opt_none_mu": _mu_list(none_neu)})
         return out
 
 
@@ -1023,6 +1045,7 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
     stable = np.zeros(shape, dtype=bool)
     lam = np.zeros(shape)
     aused = np.full(shape[:3], np.nan)
+    astep3 = np.full(shape[:3], np.nan)
     msgs, results, psi = [], {}, 2 * np.pi * np.arange(n_psi) / n_psi
     for c, cand in enumerate(candidates):
         per_case = []
@@ -1062,6 +1085,7 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
                 stable[c, i, j] = r.stable
                 lam[c, i, j] = r.lambda0
                 aused[c, i, j] = r.A
+                astep3[c, i, j] = r.A_step3
                 psi = np.asarray(r.psi)
                 row.append(r.message)
             per_case.append(tuple(row))
@@ -1069,7 +1093,7 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
     return ScanData(cases=cases, mu_values=mu_values, psi=psi, keys=tuple(cd.key for cd in candidates),
                     labels=tuple(cd.label for cd in candidates),
                     readings=tuple(cd.reading for cd in candidates), category=cat, stable=stable,
-                    lambda0=lam, A_used=aused, weights=weights, messages=tuple(msgs), results=results)
+                    lambda0=lam, A_used=aused, A_step3=astep3, weights=weights, messages=tuple(msgs), results=results)
 
 
 def plot_scan(data: ScanData, axes, *, rows=None) -> None:
@@ -1128,7 +1152,8 @@ def figure_scan(data: ScanData) -> Figure:
 
 @dataclass(frozen=True)
 class SearchCheck:
-    """Certificates of the scan recomputed with a finer sphere search.
+    """Certificates of the scan recomputed with finer searches: four times the quasi-random
+    directions per sphere, and four times the iterations of each local ascent.
 
     Attributes
     ----------
@@ -1139,63 +1164,241 @@ class SearchCheck:
     mu_values : numpy.ndarray
         Advance ratio of each check, (n,).
     n_sphere : int
-        Quasi-random directions per sphere of the finer search.
+        Quasi-random directions per sphere of the first finer search.
+    n_iter : int
+        Iterations of each local ascent in the second finer search.
     A : numpy.ndarray
-        Bound after step 3, scan and finer search, norm units, (n, 2).
+        Certified bound, scan and the two finer searches, norm units, (n, 3).
     min_lambda0 : numpy.ndarray
-        Smallest ``lambda0``, scan and finer search, norm units, (n, 2).
+        Smallest ``lambda0``, scan and finer searches, norm units, (n, 3).
     n_stable : numpy.ndarray
-        Stable azimuths, scan and finer search, (n, 2).
+        Stable azimuths, scan and finer searches, (n, 3).
     """
 
     case: str
     keys: tuple
     mu_values: np.ndarray
     n_sphere: int
+    n_iter: int
     A: np.ndarray
     min_lambda0: np.ndarray
     n_stable: np.ndarray
 
     @property
     def relative_change(self) -> np.ndarray:
-        """``|min lambda0 (finer) / min lambda0 (scan) - 1|``, (n,)."""
-        return np.abs(self.min_lambda0[:, 1] / self.min_lambda0[:, 0] - 1)
+        """Largest ``|min lambda0 (finer) / min lambda0 (scan) - 1|`` over the finer searches, (n,);
+        0 where neither certifies, infinite where only one does."""
+        lam0, fine = self.min_lambda0[:, :1], self.min_lambda0[:, 1:]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            rel = np.where(lam0 > 0, np.abs(fine / lam0 - 1), np.where(fine > 0, np.inf, 0.0))
+        return rel.max(axis=1)
 
     def summary(self) -> str:
-        """One line per check: ``A1``, smallest ``lambda0`` (four decimals) and stable azimuths,
-        scan -> finer search."""
-        return "\n".join(
-            f"{key:14s} mu = {mu:4.2f}: A1 {a[0]:.4f} -> {a[1]:.4f}, min lambda0 {lam[0]:.4f} -> "
-            f"{lam[1]:.4f}, azimuths {int(n[0])} -> {int(n[1])}"
-            for key, mu, a, lam, n in zip(self.keys, self.mu_values, self.A, self.min_lambda0, self.n_stable))
+        """One line per check: certified ``A``, smallest ``lambda0`` (four decimals) and stable
+        azimuths, scan -> more directions -> more iterations."""
+        arrow = lambda v, fmt: " -> ".join(format(x, fmt) for x in v.tolist())  # noqa: E731
+        head = f"scan -> n_sphere {self.n_sphere} -> n_iter {self.n_iter}"
+        return "\n".join([head] + [
+            f"{key:14s} mu = {mu:4.2f}: A {arrow(a, '.4f')}, min lambda0 {arrow(lam, '.4f')}, "
+            f"azimuths {arrow(n, 'd')}"
+            for key, mu, a, lam, n in zip(self.keys, self.mu_values, self.A, self.min_lambda0,
+                                          self.n_stable.astype(int))])
 
     def facts(self) -> dict:
         """The largest relative change of the smallest ``lambda0``, percent, one decimal."""
         return {"ch7_conv": round(float(100 * max(self.relative_change)), 1)}
 
 
+@dataclass(frozen=True)
+class CellSystem:
+    """The system and the Liapunov function behind one cell of a scan.
+
+    Attributes
+    ----------
+    f : callable
+        The disturbed equations ``x' = f(psi, x)`` about the cell's steady motion.
+    function : object
+        The Liapunov function (``W``, ``dW``; a quadratic one has ``P(psi)``).
+    quadratic : bool
+        True for ``W = x^T P(psi) x``.
+    result : TechnicalStabilityResult
+        The scan's result for the cell.
+    """
+
+    f: object
+    function: object
+    quadratic: bool
+    result: object
+
+
+def cell_system(scan: ScanData, motions: SteadyMotions, key: str, case: str, mu: float) -> CellSystem:
+    """Rebuild the disturbed equations and the Liapunov function of the scan cell ``(key, case,
+    mu)`` (strict candidates), as :func:`scan_data` built them, for an independent check of its
+    result.
+
+    Raises
+    ------
+    KeyError
+        The scan has no result for that cell (no steady motion or no function).
+    ValueError
+        ``key`` is not a strict candidate of the scan.
+    """
+    cand = {cd.key: cd for cd in CANDIDATES}.get(key)
+    if cand is None or cand.reading != "strict" or key not in scan.keys:
+        raise ValueError(f"key must be a strict candidate of the scan, one of "
+                         f"{tuple(k for k, r in zip(scan.keys, scan.readings) if r == 'strict')}, got {key!r}")
+    mu = float(mu)
+    result = scan.result(key, case, mu)
+    if result is None:
+        raise KeyError(f"the scan has no result for {key!r}, {case} C.G., mu = {mu:g}")
+    blade = Blade(BladeParameters.table_i(case), mu)
+    if cand.steady == "periodic" and mu > 0:
+        steady = motions.steady(case, mu)
+    else:
+        steady = Blade(blade.params, 0.0).equilibrium()
+    if cand.function == "energy":
+        fun = energy_function(blade, steady)
+    else:
+        Q = None
+        if cand.function == "quadratic-opt":
+            Q = np.diag(scan.weights[scan.cases.index(case)] / DEFAULT_SCALES**2)
+        fun = quadratic_function(blade, steady, Q)
+    return CellSystem(f=disturbed_rhs(blade, steady), function=fun,
+                      quadratic=cand.function != "energy", result=result)
+
+
+@dataclass(frozen=True)
+class RuleChanges:
+    """The scan's strict verdicts under the sound rule beside the paper's rule (step 6 at each
+    start azimuth), on the same functions, azimuths and search.
+
+    Attributes
+    ----------
+    labels : tuple of str
+        Row labels ``"function, case C.G."``, (r,).
+    mu_values : numpy.ndarray
+        Advance ratios, (m,).
+    n_paper, n_sound : numpy.ndarray
+        Azimuths certified, (r, m); -1 where the scan has no result.
+    A_paper, A_sound : numpy.ndarray
+        Certified bound, norm units, (r, m); NaN where no result.
+    lambda0_paper, lambda0_sound : numpy.ndarray
+        Smallest certified ``lambda0``, norm units, (r, m); 0 where nothing is certified.
+    n_psi : int
+        Azimuths of each run.
+    """
+
+    labels: tuple
+    mu_values: np.ndarray
+    n_paper: np.ndarray
+    n_sound: np.ndarray
+    A_paper: np.ndarray
+    A_sound: np.ndarray
+    lambda0_paper: np.ndarray
+    lambda0_sound: np.ndarray
+    n_psi: int
+
+    #: A bound or start region that moves by more than this (relative) counts as changed.
+    RTOL = 0.005
+
+    def changed(self) -> np.ndarray:
+        """Boolean (r, m): the azimuth count differs, or ``A`` or the smallest ``lambda0`` by more
+        than :attr:`RTOL`."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dA = np.abs(self.A_sound / self.A_paper - 1)
+            dl = np.abs(self.lambda0_sound / self.lambda0_paper - 1)
+        ran = self.n_paper >= 0
+        return ran & ((self.n_paper != self.n_sound) | (dA > self.RTOL) | (dl > self.RTOL))
+
+    def rows(self) -> list:
+        """One row per changed cell: function and case, mu, azimuths certified, ``A`` (three
+        decimals) and smallest ``lambda0`` (three significant digits), paper's rule -> sound rule."""
+        out = []
+        for r, j in zip(*np.nonzero(self.changed())):
+            lam = lambda v: f"{v:.3g}" if v > 0 else "-"  # noqa: E731
+            out.append((self.labels[r], f"{self.mu_values[j]:g}",
+                        f"{self.n_paper[r, j]} -> {self.n_sound[r, j]}",
+                        f"{self.A_paper[r, j]:.3f} -> {self.A_sound[r, j]:.3f}",
+                        f"{lam(self.lambda0_paper[r, j])} -> {lam(self.lambda0_sound[r, j])}"))
+        return out
+
+    def markdown(self) -> str:
+        """:meth:`rows` as a Markdown table."""
+        return markdown_table(("function, case", "mu", f"azimuths certified (of {self.n_psi})",
+                               "A", "min lambda0"), self.rows())
+
+    def summary(self) -> str:
+        """The table's rows, and how many cells changed of how many."""
+        ran = self.n_paper >= 0
+        lines = [" | ".join(r) for r in self.rows()]
+        lines.append(f"changed: {int(self.changed().sum())} of {int(ran.sum())} cells; certified by the paper's "
+                     f"rule only: {int(((self.n_paper > 0) & (self.n_sound == 0)).sum())}; never the reverse: "
+                     f"{bool(not ((self.n_sound > 0) & (self.n_paper == 0)).any())}")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Counts of the changed cells and of those the paper's rule alone certified."""
+        ran = self.n_paper >= 0
+        return {"ch7_rule_changed": int(self.changed().sum()), "ch7_rule_cells": int(ran.sum()),
+                "ch7_rule_lost": int(((self.n_paper > 0) & (self.n_sound == 0)).sum()),
+                "ch7_rule_gained": int(((self.n_sound > 0) & (self.n_paper == 0)).sum())}
+
+
+def rule_changes(scan: ScanData, motions: SteadyMotions, *, keys=("quadratic", "quadratic-opt")) -> RuleChanges:
+    """Rerun the scan's cells of ``keys`` (strict candidates, every case and advance ratio) with the
+    paper's rule, on the same functions (:func:`cell_system`), azimuths and search options
+    (:data:`SCAN_OPTIONS`), and set the verdicts beside the scan's (the sound rule)."""
+    labels, shape = [], (len(keys) * len(scan.cases), scan.mu_values.size)
+    n_p, n_s = np.full(shape, -1), np.full(shape, -1)
+    A_p, A_s = np.full(shape, np.nan), np.full(shape, np.nan)
+    l_p, l_s = np.zeros(shape), np.zeros(shape)
+    row = 0
+    for key in keys:
+        for case in scan.cases:
+            labels.append(f"{scan.labels[scan.keys.index(key)].split(',')[0]}"
+                          f"{', optimised' if key == 'quadratic-opt' else ''}, {case} C.G.")
+            for j, mu in enumerate(scan.mu_values):
+                try:
+                    cell = cell_system(scan, motions, key, case, float(mu))
+                except KeyError:
+                    continue
+                r_s, fun = cell.result, cell.function
+                r_p = technical_stability(cell.f, fun.W, r_s.A_requested, scales=r_s.scales, dW=fun.dW,
+                                          rule="paper", **{**SCAN_OPTIONS, "n_psi": r_s.psi.size})
+                for r, n, A, lam in ((r_p, n_p, A_p, l_p), (r_s, n_s, A_s, l_s)):
+                    n[row, j] = int(r.stable.sum())
+                    A[row, j] = r.A
+                    lam[row, j] = r.lambda0[r.stable].min() if r.stable.any() else 0.0
+            row += 1
+    return RuleChanges(labels=tuple(labels), mu_values=np.asarray(scan.mu_values, dtype=float),
+                       n_paper=n_p, n_sound=n_s, A_paper=A_p, A_sound=A_s, lambda0_paper=l_p,
+                       lambda0_sound=l_s, n_psi=int(scan.psi.size))
+
+
 def search_check(scan: ScanData, motions: SteadyMotions, *, case: str = "forward",
-                 checks: tuple = ((0.0, "quadratic"), (0.0, "quadratic-opt"), (0.25, "quadratic-opt")),
-                 n_sphere: int = 1024) -> SearchCheck:
-    """Rerun :func:`rotorlyap.analysis.stability.blade_stability` for the ``(mu, key)`` of
-    ``checks`` (quadratic candidates about the periodic motion) with ``n_sphere``
-    quasi-random directions per sphere, on the scan's azimuths, the optimised weights of the
-    scan."""
-    i = scan.cases.index(case)
-    p = BladeParameters.table_i(case)
-    A, lam, n = np.zeros((len(checks), 2)), np.zeros((len(checks), 2)), np.zeros((len(checks), 2), dtype=int)
+                 checks: tuple = ((0.0, "quadratic"), (0.0, "quadratic-opt"), (0.25, "quadratic"),
+                                  (0.2, "quadratic-opt")),
+                 n_sphere: int = 1024, n_iter: int = 160) -> SearchCheck:
+    """Rerun the ``(mu, key)`` cells of ``checks`` (strict candidates of the scan) with
+    ``n_sphere`` quasi-random directions per sphere, and again with ``n_iter`` iterations of
+    each local ascent, on the scan's azimuths and function (:func:`cell_system`)."""
+    runs = ({"n_sphere": n_sphere}, {"n_iter": n_iter})
+    A, lam, n = (np.zeros((len(checks), 1 + len(runs))) for _ in range(3))
     for k, (mu, key) in enumerate(checks):
-        r0 = scan.result(key, case, mu)
-        Q = None if key == "quadratic" else np.diag(scan.weights[i] / DEFAULT_SCALES**2)
-        steady = None if mu == 0 else motions.steady(case, mu)
-        r1 = blade_stability(p, mu, lyapunov=lambda b, steady, Q=Q: quadratic_function(b, steady, Q),
-                             steady=steady, n_psi=scan.psi.size, n_sphere=n_sphere)
-        A[k] = r0.A, r1.A
-        lam[k] = r0.lambda0.min(), r1.lambda0.min()
-        n[k] = int(r0.stable.sum()), int(r1.stable.sum())
+        cell = cell_system(scan, motions, key, case, mu)
+        r0, fun = cell.result, cell.function
+        a = np.asarray(r0.scales)
+        w_matrix = (lambda psi: a[:, None] * fun.P(psi) * a[None, :]) if cell.quadratic else None
+        finer = [technical_stability(cell.f, fun.W, r0.A_requested, scales=a, dW=fun.dW, w_matrix=w_matrix,
+                                     **{**SCAN_OPTIONS, "n_psi": r0.psi.size, **opts})
+                 for opts in runs]
+        for col, r in enumerate([r0] + finer):
+            A[k, col] = r.A
+            lam[k, col] = r.lambda0[r.stable].min() if r.stable.any() else 0.0
+            n[k, col] = int(r.stable.sum())
     return SearchCheck(case=case, keys=tuple(key for _, key in checks),
                        mu_values=np.array([mu for mu, _ in checks], dtype=float), n_sphere=int(n_sphere),
-                       A=A, min_lambda0=lam, n_stable=n)
+                       n_iter=int(n_iter), A=A, min_lambda0=lam, n_stable=n)
 
 
 # --------------------------------------------------------------------------------------

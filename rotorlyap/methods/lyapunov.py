@@ -15,6 +15,12 @@ The six steps, with the scaled norm ``||x|| = sqrt(sum((x_i / a_i)**2))``:
    ``sup W(psi_j, x) < alpha``;
 6. for each azimuth, check ``W'(psi_j, x) <= 0`` on the shell ``lambda0_j < ||x|| <= A``.
 
+Step 6 at one azimuth is the paper's algorithm (``rule="paper"``); it is not the theorem when
+``f`` or ``W`` depends on ``psi``, since a motion started at ``psi_j`` lives at later azimuths.
+The default strict reading (``rule="sound"``) checks the theorem's condition (h) over the
+whole period on the band between the level ``alpha`` and the bound ``A`` (:func:`band_max_dw`)
+and certifies all azimuths or none.
+
 Suprema and infima are found by :mod:`rotorlyap.methods.sampling` (dense quasi-random sampling
 refined by local ascent), so a result is exactly as trustworthy as that search: the
 resolution parameters are documented below and their effect is shown in the book.
@@ -94,6 +100,13 @@ class TechnicalStabilityResult:
     band_max_dW : float
         ``rule="sound"``: the largest ``W'`` found on the band ``||x|| <= A, W >= c`` over the
         whole period (negative, below the margin, where certified); NaN for the paper's rule.
+    check_evaluations : int
+        ``rule="sound"``: the evaluations spent in the final check of the certified bound (the
+        thorough band search at ``A``); the part of ``n_evaluations`` an adversary must beat.
+    A_step3 : float
+        Step 3's bound ``A1``: the largest radius up to ``A_requested`` with ``W' <= 0`` on the
+        sphere itself over the period (0 if none). The paper's rule uses it as ``A``; the sound
+        rule may reduce ``A`` further, until (h) holds on the whole band.
     """
 
     A_requested: float
@@ -112,8 +125,10 @@ class TechnicalStabilityResult:
     reading: str = "strict"
     n_evaluations: int = field(default=0, compare=False)
     rule: str = "paper"
+    check_evaluations: int = field(default=0, compare=False)
     level: float = float("nan")
     band_max_dW: float = float("nan")
+    A_step3: float = float("nan")
 
     def __post_init__(self) -> None:
         for name in ("scales", "psi", "lambda0", "max_dW", "argmax_dW", "stable"):
@@ -235,7 +250,7 @@ def technical_stability(
     fd_step: float = 1e-4,
     seed: int = 0,
     test_directions=None,
-    rule: str = "paper",
+    rule: str | None = None,
     w_matrix: Callable[[np.ndarray], np.ndarray] | None = None,
     margin: float = 1e-6,
 ) -> TechnicalStabilityResult:
@@ -289,8 +304,10 @@ def technical_stability(
         Step of :func:`orbital_derivative` when ``dW`` is omitted.
     seed : int
         Seed of the quasi-random directions (results are deterministic for a given seed).
-    rule : {"paper", "sound"}
-        How condition (h) of the theorem is checked. ``"paper"``: the paper's algorithm, step 6
+    rule : {"paper", "sound"}, optional
+        How condition (h) of the theorem is checked. Default: ``"sound"`` for the strict
+        reading (the certificate), ``"paper"`` for the practical reading (``test_directions``
+        given: the paper's indicator). ``"paper"``: the paper's algorithm, step 6
         at each start azimuth alone (``W' <= 0`` on the shell ``lambda0_j < ||x|| <= A`` at
         ``psi_j``); when ``f`` or ``W`` depends on ``psi`` this does not follow from the theorem
         (a motion started at ``psi_j`` lives at later azimuths), so its verdicts are the
@@ -362,8 +379,10 @@ def technical_stability(
     if not (np.isfinite(rtol) and rtol >= 0):
         raise ValueError(f"rtol must be finite and >= 0, got {rtol!r}")
     fd_step = _positive_float("fd_step", fd_step)
+    if rule is None:
+        rule = "paper" if test_directions is not None else "sound"
     if rule not in RULES:
-        raise ValueError(f"rule must be one of {RULES}, got {rule!r}")
+        raise ValueError(f"rule must be one of {RULES} (or None for the reading's default), got {rule!r}")
     if w_matrix is not None and not callable(w_matrix):
         raise TypeError(f"w_matrix must be callable as w_matrix(psi) or None, got {type(w_matrix).__name__}")
     if w_matrix is not None and rule != "sound":
@@ -422,7 +441,7 @@ def technical_stability(
                 f"was found on every sphere tested for radii from {A * 1e-4:.3g} to A = {A:.3g} "
                 f"(step 3); max W' on ||x|| = A is {step3:.3g}"
             ),
-            reading=reading, n_evaluations=sys.count,
+            reading=reading, n_evaluations=sys.count, A_step3=0.0,
         )
 
     # step 4
@@ -447,6 +466,7 @@ def technical_stability(
         A_requested=A, scales=scales, A=float(A_used), alpha=alpha, psi=psi,
         lambda0=lambda0, max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period,
         step3_max_dW=step3, tol=tol, message=message, reading=reading, n_evaluations=sys.count,
+        A_step3=float(A_used),
     )
 
 
@@ -478,17 +498,19 @@ def _start_radii(sys, psi, A_used, level, scales, dirs, common, n_radii, n_bisec
 
 def _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect, *, A_max=None):
     """Step 3: ``(A_used, max W' on the sphere A)`` with ``A_used`` the largest radius found
-    with ``W' <= tol`` on its sphere over the whole period (0 if none)."""
+    with ``W' <= tol`` on its sphere over the whole period (0 if none). ``tol``: a number, or a
+    function of the radius."""
+    tol_of = tol if callable(tol) else (lambda radius: tol)
 
     def sphere_max_dw(radius: float, stop: bool) -> float:
         ext = sphere_extremum(
             sys.dw, psi, radius, scales, dirs, per_psi=False, free_psi=free,
-            stop_above=tol if stop else None, **common,
+            stop_above=tol_of(radius) if stop else None, **common,
         )
         return float(ext.value[0])
 
     step3 = sphere_max_dw(A, stop=False)
-    if step3 <= tol:
+    if step3 <= tol_of(A):
         return A, step3
     grid = np.unique(np.concatenate([
         A * np.arange(1, n_radii) / n_radii,
@@ -496,7 +518,7 @@ def _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect, *, A
     ]))[::-1]
     A_used, failing = 0.0, A
     for radius in grid:
-        if sphere_max_dw(radius, stop=True) <= tol:
+        if sphere_max_dw(radius, stop=True) <= tol_of(radius):
             A_used = radius
             break
         failing = radius
@@ -504,7 +526,7 @@ def _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect, *, A
         lo, hi = A_used, failing
         for _ in range(n_bisect):
             mid = 0.5 * (lo + hi)
-            if sphere_max_dw(mid, stop=True) <= tol:
+            if sphere_max_dw(mid, stop=True) <= tol_of(mid):
                 lo = mid
             else:
                 hi = mid
@@ -526,7 +548,13 @@ quadratic ``W`` are widened by it, on the safe side (``inf W`` lower, ``sup W`` 
 def _extreme_eigenvalues(w_matrix, psi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Smallest and largest eigenvalues of the symmetric part of ``w_matrix(psi)``, widened by
     :data:`EIGENVALUE_ROUNDOFF` so that they bound the exact ones."""
-    S = np.asarray(w_matrix(np.asarray(psi, dtype=float)), dtype=float)
+    psi = np.asarray(psi, dtype=float)
+    S = np.asarray(w_matrix(psi), dtype=float)
+    if S.ndim < 2 or S.shape[:-2] != psi.shape or S.shape[-1] != S.shape[-2]:
+        raise ValueError(f"w_matrix(psi) must return one square matrix per azimuth, shape "
+                         f"{psi.shape} + (n, n), got {S.shape} for psi of shape {psi.shape}")
+    if not np.all(np.isfinite(S)):
+        raise ValueError("w_matrix(psi) returned non-finite values")
     ev = np.linalg.eigvalsh(0.5 * (S + np.swapaxes(S, -1, -2)))
     slack = EIGENVALUE_ROUNDOFF * np.abs(ev).max(axis=-1)
     return ev[..., 0] - slack, ev[..., -1] + slack
@@ -552,9 +580,8 @@ def _ray_level(sys, psi: np.ndarray, u: np.ndarray, scales: np.ndarray, c: float
                w_matrix, n_scan: int = 16, n_bisect: int = 40) -> np.ndarray:
     """First radius along each ray ``r u`` (``u`` unit, scaled coordinates) where ``W >= c``,
     at most ``A`` (``A`` where ``W < c`` on the whole ray up to ``A``)."""
-    if w_matrix is not None:  # W = r^2 u^T S u
-        S = np.asarray(w_matrix(psi), dtype=float)
-        q = np.einsum("mi,mij,mj->m", u, S, u)
+    if w_matrix is not None:  # W = r^2 u^T S u = r^2 W(psi, u a): no matrix needed
+        q = sys.w(psi, u * scales)
         with np.errstate(divide="ignore", invalid="ignore"):
             r = np.sqrt(c / q)
         return np.where(q > 0, np.minimum(r, A), A)
@@ -582,7 +609,8 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
                 scales, period: float = 2 * np.pi, psi=None, w_matrix=None, per_psi: bool = False,
                 n_sphere: int = 1024, n_levels: int = 5, n_refine: int = 4, n_iter: int = 40,
                 seed: int = 0, stop_above: float | None = None, fd_step: float = 1e-4,
-                directions=None, n_polish: int = 256):
+                directions=None, n_polish: int = 256, n_sweep: int = 1024, starts: str = "levels",
+                n_lbfgs: int = 64):
     """Largest ``W'`` on the band ``||x|| <= A, W(psi, x) >= c`` (condition (h) of the theorem).
 
     The band is searched ray by ray: along each direction ``u`` (scaled coordinates) at each
@@ -591,8 +619,11 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     the point ``(r_c + t (A - r_c)) u`` for ``t`` in ``[0, 1]``. Points of a ray beyond
     ``r_c`` where ``W`` dips below ``c`` again are searched too: a superset of the band, on the
     safe side. The search samples ``n_levels`` values of ``t`` and the directions of
-    :func:`rotorlyap.methods.sampling.unit_sphere_points`, then refines the best with ``u``,
-    ``t`` and (unless ``per_psi``) the azimuth free.
+    :func:`rotorlyap.methods.sampling.unit_sphere_points`, refines the best of each level with
+    ``u`` and the azimuth free (the best of every level, not of all together: ``W'`` near the
+    level set is often larger than almost everywhere on the sphere ``||x|| = A``, where a narrow
+    cap may hold its maximum), then polishes them with ``t`` free too. With ``per_psi``: one
+    search per azimuth over the whole band, the azimuth fixed.
 
     Parameters
     ----------
@@ -617,11 +648,28 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     directions : array_like, optional
         Unit directions to sample instead of ``unit_sphere_points(n, n_sphere, seed)``.
     n_polish : int
-        The best candidates of the sampled and refined search (one per azimuth with
-        ``per_psi``) are polished by L-BFGS-B (:func:`_polish`); without ``per_psi``, the best
-        ``n_polish`` (default 256: on the blade's optimised hover functions the largest ``W'``
-        sits in a small cap near the flap axis, which 16 polished candidates miss and 256 find,
-        reaching the bounds an independent search confirms).
+        Without ``per_psi``: the best ``n_polish`` samples are refined by the batched ascent
+        (split evenly between the levels with ``starts="levels"``).
+    n_lbfgs : int
+        Of those, the best ``n_lbfgs`` are polished one by one by L-BFGS-B (:func:`_polish`;
+        with ``per_psi``, the one of each azimuth). On the blade's optimised hover functions the
+        largest ``W'`` sits in a small cap near the flap axis, which 16 polished candidates miss
+        and 256 find; the final check of :func:`technical_stability` polishes 256.
+    starts : {"levels", "band"}
+        Without ``per_psi``, how the starts of the local searches are chosen: ``"levels"``, the
+        best samples of each level ``t`` apart; ``"band"``, the best of all samples together
+        (the two find different maxima; :func:`technical_stability` verifies its certificate
+        with both).
+    n_sweep : int
+        Without ``per_psi``: the best 256 polished candidates are then swept over ``n_sweep``
+        azimuths of the period (each its ray and ``t`` kept), and the best 16 of the sweep are
+        polished again. The
+        largest ``W'`` about a computed periodic motion ripples in ``psi`` with the period of
+        its collocation grid (the motion's residual between nodes, ~2.8 deg for 256 points;
+        1024 azimuths put eight points on each ripple),
+        and a local ascent started at a grid azimuth stops on the nearest ripple; an
+        independent search found ``W' > 0`` on bands that the polish alone called negative.
+        0 switches the sweep off.
 
     Returns
     -------
@@ -642,20 +690,75 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         return (u * r[:, None]) * scales
 
     k = psi.size
-    ext = sphere_extremum(
-        lambda p, y: sys.dw(p, state(p, y)), psi, None, np.ones(n), dirs, per_psi=per_psi,
-        free_psi=not per_psi, period=period, shell=(np.full(k, T_MIN), np.ones(k)),
-        n_levels=n_levels, n_refine=max(n_refine, n_polish) if not per_psi else n_refine,
-        n_iter=n_iter, stop_above=stop_above if not per_psi else None,
-        keep=1 if per_psi else n_polish,
-    )
-    if stop_above is not None and not per_psi and ext.value[0] > stop_above:
-        return Extremum(ext.value[:1], ext.psi[:1], state(ext.psi[:1], ext.x[:1]))
-    value, p_best, y_best = _polish(lambda p, y: sys.dw(p, state(p, y)), ext, free_psi=not per_psi)
+    g = lambda p, y: sys.dw(p, state(p, y))  # noqa: E731
+    if per_psi:
+        ext = sphere_extremum(g, psi, None, np.ones(n), dirs, per_psi=True, free_psi=False,
+                              period=period, shell=(np.full(k, T_MIN), np.ones(k)),
+                              n_levels=n_levels, n_refine=n_refine, n_iter=n_iter)
+    else:
+        # the starts of the local searches are taken level by level (t fixed: the level set,
+        # the sphere ||x|| = A and between), then polished with t free: W' near the level set
+        # is often larger than almost everywhere on the sphere, and ranking all samples together
+        # would start every local search there, missing a narrow cap of W' > 0 on the sphere
+        if starts not in ("levels", "band"):
+            raise ValueError(f"starts must be 'levels' or 'band', got {starts!r}")
+        levels = np.linspace(T_MIN, 1.0, n_levels) if n_levels > 1 else np.ones(1)
+        per = max(1, -(-n_polish // levels.size))
+        parts = []
+        if starts == "band":
+            e = sphere_extremum(g, psi, None, np.ones(n), dirs, per_psi=False, free_psi=True,
+                                period=period, shell=(np.full(k, T_MIN), np.ones(k)),
+                                n_levels=n_levels, n_refine=max(n_refine, n_polish), n_iter=n_iter,
+                                stop_above=stop_above, keep=n_polish)
+            if stop_above is not None and e.value[0] > stop_above:
+                return Extremum(e.value[:1], e.psi[:1], state(e.psi[:1], e.x[:1]))
+            parts.append(e)
+            levels = levels[:0]
+        for t in levels:
+            e = sphere_extremum(g, psi, float(t), np.ones(n), dirs, per_psi=False, free_psi=True,
+                                period=period, n_refine=max(n_refine, per), n_iter=n_iter,
+                                stop_above=stop_above, keep=per)
+            if stop_above is not None and e.value[0] > stop_above:
+                return Extremum(e.value[:1], e.psi[:1], state(e.psi[:1], e.x[:1]))
+            parts.append(e)
+        ext = Extremum(np.concatenate([e.value for e in parts]), np.concatenate([e.psi for e in parts]),
+                       np.concatenate([e.x for e in parts]))
+    if not per_psi and ext.value.size > n_lbfgs:  # the batched ascent refined them all;
+        top = np.argsort(-ext.value)[:n_lbfgs]    # quasi-Newton for the best of those
+        ext = Extremum(ext.value[top], ext.psi[top], ext.x[top])
+    value, p_best, y_best = _polish(g, ext, free_psi=not per_psi)
     if per_psi:
         return Extremum(value, p_best, state(p_best, y_best))
+    if n_sweep > 0:
+        value, p_best, y_best = _sweep_azimuth(g, value, p_best, y_best, period, int(n_sweep))
     i = int(np.argmax(value))
     return Extremum(value[i:i + 1], p_best[i:i + 1], state(p_best[i:i + 1], y_best[i:i + 1]))
+
+
+def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_keep: int = 16,
+                   n_candidates: int = 256):
+    """Each candidate ``(psi_i, y_i)`` evaluated at ``n_sweep`` azimuths of the period with its
+    ``y`` kept (all candidates in blocks of one vectorised call); the best ``n_keep`` new
+    points polished by :func:`_polish` with the azimuth free. Returns (values, psi, y) of the
+    candidates, each never worse than before."""
+    grid = period * np.arange(n_sweep) / n_sweep
+    value, psi, y = value.copy(), psi.copy(), y.copy()
+    new_v, new_p = np.full(value.size, -np.inf), np.zeros(value.size)
+    top = np.argsort(-value)[:n_candidates]
+    block = max(1, 262_144 // n_sweep)
+    for s in range(0, top.size, block):
+        idx = top[s:s + block]
+        v = np.asarray(fun(np.tile(grid, idx.size), np.repeat(y[idx], n_sweep, axis=0)), dtype=float)
+        v = v.reshape(idx.size, n_sweep)
+        j = np.argmax(v, axis=1)
+        new_v[idx], new_p[idx] = v[np.arange(idx.size), j], grid[j]
+    best = np.argsort(-new_v)[:n_keep]
+    best = best[new_v[best] > -np.inf]
+    start = Extremum(new_v[best], new_p[best], y[best])
+    v2, p2, y2 = _polish(fun, start, free_psi=True)
+    better = v2 > value[best]
+    value[best[better]], psi[best[better]], y[best[better]] = v2[better], p2[better], y2[better]
+    return value, psi, y
 
 
 T_MIN = 1e-9
@@ -725,16 +828,23 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         return float(sphere_extremum(lambda p, x: np.abs(sys.w(p, x)), psi, r, scales, dirs,
                                      per_psi=False, n_refine=1, n_iter=0, period=period).value[0])
 
-    def band(r: float, alpha: float, stop: float | None, per_psi: bool = False):
+    def band(r: float, alpha: float, stop: float | None, per_psi: bool = False, starts: str = "levels",
+             directions=None, n_lbfgs: int = 64):
         return band_max_dw(sys, None, None, alpha, r, scales=scales, period=period, psi=psi,
-                           w_matrix=w_matrix, per_psi=per_psi, directions=dirs,
+                           w_matrix=w_matrix, per_psi=per_psi,
+                           directions=dirs if directions is None else directions,
                            n_levels=n_shells, stop_above=stop, n_refine=common["n_refine"],
-                           n_iter=common["n_iter"])
+                           n_iter=common["n_iter"], starts=starts, n_lbfgs=n_lbfgs)
 
-    def passes(r: float):
+    # a second set of directions for the final check: another scrambling, as many points
+    dirs_2 = unit_sphere_points(n, max(dirs.shape[0] - 2 * n * n, 16), 1)
+
+    def passes(r: float, thorough: bool = False):
         """(h) on the band of radius r: a search over the period with the azimuth free, then,
         if it found nothing, the map at the grid azimuths with the azimuth fixed (two searches
-        started differently: the one can find what the other misses)."""
+        started differently: the one can find what the other misses). ``thorough``: also the
+        band searches started from the best samples of the whole band, and from a second set
+        of directions (the final check of the certified bound)."""
         alpha = alpha_of(r)
         need = -margin * w_size(r)
         if not alpha > 0:
@@ -742,15 +852,25 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         worst = float(band(r, alpha, stop=need).value[0])
         if worst <= need:
             worst = max(worst, float(band(r, alpha, stop=None, per_psi=True).value.max()))
+        if thorough and worst <= need:
+            for starts, d in (("band", dirs), ("levels", dirs_2), ("band", dirs_2)):
+                worst = max(worst, float(band(r, alpha, stop=need, starts=starts, directions=d,
+                                              n_lbfgs=256).value[0]))
+                if worst > need:
+                    break
         return bool(worst <= need), alpha, worst, need
 
     # W' on the sphere itself (a part of the band): the paper's step 3 bounds A from above
-    A1, first_worst = _step3(sys, A, psi, scales, dirs, True, common, -margin * w_size(A),
-                             n_radii, n_bisect)
+    # the margin relative to the size of W on each sphere, as on the band
+    A1, step3 = _step3(sys, A, psi, scales, dirs, True, common, lambda r: -margin * w_size(r),
+                       n_radii, n_bisect)
+    first_worst = step3
     A_used, alpha, worst, need = 0.0, 0.0, first_worst, -margin * w_size(A)
     if A1 > 0:
         ok, alpha_1, worst_1, need_1 = passes(A1)
         first_worst = worst_1  # the band's worst at the sphere's bound: reported if nothing passes
+        if not ok and alpha_1 > 0:  # the search stopped at the first W' > -margin: its maximum
+            first_worst = max(worst_1, float(band(A1, alpha_1, stop=None).value[0]))
         if ok:
             A_used, alpha, worst, need = A1, alpha_1, worst_1, need_1
         else:
@@ -774,17 +894,35 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
                     else:
                         hi = mid
                 A_used = lo
+    # the final check of the bound with the thorough search; where it finds what the bisection's
+    # search missed, the bound steps down (0.5 % steps, then 3 %) until the thorough search passes
+    check_evaluations = 0
+    for step in range(70 if A_used > 0 else 0):
+        count = sys.count
+        ok_t, alpha_t, worst_t, need_t = passes(A_used, thorough=True)
+        check_evaluations = sys.count - count
+        if ok_t:
+            alpha, worst, need = alpha_t, worst_t, need_t
+            break
+        A_used *= 0.995 if step < 10 else 0.97
+    else:
+        A_used = 0.0
 
     if A_used == 0.0:
+        ext = sphere_extremum(sys.dw, psi, A, scales, dirs, **common)  # where (h) fails, per azimuth
         return TechnicalStabilityResult(
             A_requested=A, scales=scales, A=0.0, alpha=0.0, psi=psi, lambda0=np.zeros(n_psi),
-            max_dW=np.full(n_psi, first_worst), argmax_dW=np.zeros((n_psi, n)),
-            stable=np.zeros(n_psi, dtype=bool), period=period, step3_max_dW=first_worst,
+            max_dW=ext.value, argmax_dW=ext.x,
+            stable=np.zeros(n_psi, dtype=bool), period=period, step3_max_dW=step3,
             tol=need, reading="strict", n_evaluations=sys.count, rule="sound",
-            level=float("nan"), band_max_dW=first_worst,
-            message=(f"nothing certified: for every bound tried from {A * 1e-4:.3g} to A = {A:.3g}, "
-                     "W' > -margin was found on the band ||x|| <= A, W >= alpha over the period "
-                     f"(condition (h) of the theorem; at the largest bound tried, max W' = {first_worst:.3g})"),
+            level=float("nan"), band_max_dW=first_worst, A_step3=float(A1),
+            message=(
+                f"nothing certified: W' > -margin was found on every sphere tested for radii from "
+                f"{A * 1e-4:.3g} to A = {A:.3g} (condition (h) fails on the sphere itself); max W' "
+                f"on ||x|| = A is {step3:.3g}" if A1 == 0.0 else
+                f"nothing certified: for every bound tried from {A1 * 1e-4:.3g} to A1 = {A1:.3g} "
+                "(where W' < 0 on the sphere), W' > -margin was found on the band ||x|| <= A1, "
+                f"W >= alpha over the period (condition (h)); at A1, max W' on the band = {first_worst:.3g}"),
         )
 
     c = alpha
@@ -805,7 +943,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
                if certified else "nothing certified: W' > -margin found on the band")
     return TechnicalStabilityResult(
         A_requested=A, scales=scales, A=float(A_used), alpha=float(c), psi=psi, lambda0=lambda0,
-        max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period, step3_max_dW=first_worst,
+        max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period, step3_max_dW=step3,
         tol=need, message=message, reading="strict", n_evaluations=sys.count, rule="sound",
-        level=float(c), band_max_dW=worst,
+        level=float(c), band_max_dW=worst, A_step3=float(A1), check_evaluations=int(check_evaluations),
     )

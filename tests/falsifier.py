@@ -1,0 +1,181 @@
+"""An adversary for certificates: searches independent of the engine's, and worst-case motions.
+
+Not a test module: the falsifier tests (``test_sound_rule*.py``, ``test_falsifier_*.py``) import
+it. What it attacks is a :class:`~rotorlyap.methods.lyapunov.TechnicalStabilityResult` of the
+sound rule, the claim "every motion started at ``psi_j`` with ``||x|| < lambda0_j`` stays inside
+``||x|| < A``", through the three facts the theorem draws it from:
+
+* ``W >= alpha`` on the sphere ``||x|| = A`` at every azimuth;
+* ``W < alpha`` inside every certified start ball (at its azimuth);
+* ``W' < 0`` on the band ``||x|| <= A, W >= alpha`` at every azimuth;
+
+and, beside the theorem, through the motion itself: starts on the boundary of the certified
+region in the directions that maximise the peak norm (found by optimisation, not by random
+draws), integrated for 20 periods.
+
+The searches share nothing with the engine's (Sobol' directions refined by projected gradient
+ascent on spheres): pseudo-random points in hyperspherical coordinates, scipy's differential
+evolution over the box of those coordinates and the azimuth, and L-BFGS-B from the best of both.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import differential_evolution, minimize
+
+from rotorlyap.methods.simulation import simulate
+
+
+def unit_vectors(angles: np.ndarray, n: int) -> np.ndarray:
+    """Hyperspherical coordinates ``(k, n - 1)`` -> unit vectors ``(k, n)``."""
+    angles = np.atleast_2d(angles)
+    k = angles.shape[0]
+    out = np.ones((k, n))
+    for i in range(n - 1):
+        out[:, i] *= np.cos(angles[:, i])
+        out[:, i + 1:] *= np.sin(angles[:, i])[:, None]
+    return out
+
+
+def box(n: int, period: float) -> list[tuple[float, float]]:
+    """Bounds of (azimuth, hyperspherical angles) for an ``n``-state sphere."""
+    return [(0.0, period)] + [(0.0, np.pi)] * (n - 2) + [(0.0, 2.0 * np.pi)] * (n > 1)
+
+
+def adversary_minimum(fun, bounds, evaluations: int, seed: int = 1) -> float:
+    """The minimum of the vectorised ``fun(z)`` (``z`` of shape ``(k, d)``) over the box ``bounds``:
+    ``evaluations`` pseudo-random points in batches, differential evolution (at most 200 000
+    evaluations, vectorised over the population), and L-BFGS-B from the best eight of both."""
+    rng = np.random.default_rng(seed)
+    lo, hi = np.array(bounds, dtype=float).T
+    pool = []
+    done = 0
+    while done < evaluations:
+        m = min(100_000, evaluations - done)
+        z = lo + (hi - lo) * rng.random((m, lo.size))
+        v = np.asarray(fun(z), dtype=float)
+        order = np.argsort(v)[:8]
+        pool += [(float(v[i]), z[i]) for i in order]
+        done += m
+    popsize = 15
+    maxiter = max(10, min(evaluations, 200_000) // (popsize * lo.size) - 1)
+    res = differential_evolution(
+        lambda z: fun(z.T), bounds, popsize=popsize, maxiter=maxiter, tol=0.0, atol=0.0,
+        seed=seed, vectorized=True, polish=False, updating="deferred",
+    )
+    pool.append((float(res.fun), np.asarray(res.x)))
+    pool.sort(key=lambda item: item[0])
+    best = pool[0][0]
+    for _, z0 in pool[:8]:
+        r = minimize(lambda z: float(fun(z[None, :])[0]), z0, method="L-BFGS-B", bounds=bounds)
+        best = min(best, float(r.fun))
+    return best
+
+
+@dataclass(frozen=True)
+class Attack:
+    """What the adversary found on one certificate.
+
+    Attributes
+    ----------
+    min_w_sphere : float
+        Smallest ``W`` found on the sphere ``||x|| = A`` over the period (must be >= alpha).
+    sup_w_balls : float
+        Largest ``W - alpha`` found on the boundaries of the certified start balls (must be <= 0).
+    max_dw_band : float
+        Largest ``W'`` found on the band ``||x|| <= A, W >= alpha`` over the period (must be < 0).
+    evaluations : int
+        Evaluations of ``W'`` spent on the band.
+    """
+
+    min_w_sphere: float
+    sup_w_balls: float
+    max_dw_band: float
+    evaluations: int
+
+
+def band_level(W, psi, u, a, c: float, A: float, *, quadratic: bool) -> np.ndarray:
+    """Radius where the ray ``r u`` meets the level ``W = c`` (capped at ``A``): from ``W(r u) =
+    r^2 W(u)`` for a quadratic ``W``, by bisection otherwise."""
+    if quadratic:
+        return np.minimum(np.sqrt(c / W(psi, u * a)), A)
+    lo, hi = np.zeros(len(psi)), np.full(len(psi), A)
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        up = W(psi, mid[:, None] * u * a) >= c
+        hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
+    return hi
+
+
+def band_maximum(W, dW, scales, period: float, c: float, A: float, evaluations: int, *,
+                 quadratic: bool) -> float:
+    """Largest ``W'`` the adversary finds on the band ``||x|| <= A, W >= c``, the azimuth free,
+    along rays from the level out to ``A``."""
+    n, a = scales.size, scales
+
+    def dw_on_band(z):
+        psi, u, t = z[:, 0], unit_vectors(z[:, 1:-1], n), z[:, -1]
+        r0 = band_level(W, psi, u, a, c, A, quadratic=quadratic)
+        return -dW(psi, (r0 + t * (A - r0))[:, None] * u * a)
+
+    return -adversary_minimum(dw_on_band, box(n, period) + [(0.0, 1.0)], evaluations)
+
+
+def attack(W, dW, result, *, evaluations: int, quadratic: bool = False) -> Attack:
+    """Independent searches on a certificate: min ``W`` on the sphere ``A`` and max ``W - alpha``
+    on the boundaries of the certified start balls (``evaluations`` each), max ``W'`` on the
+    band (10 x ``evaluations``)."""
+    n, a = result.scales.size, result.scales
+    A, c, T = result.A, result.alpha, result.period
+
+    def w_on_sphere(z):
+        return W(z[:, 0], A * unit_vectors(z[:, 1:], n) * a)
+
+    min_w = adversary_minimum(w_on_sphere, box(n, T), evaluations)
+
+    idx = np.flatnonzero(result.stable)
+
+    def w_in_ball(z):  # the azimuth index as a continuous coordinate, truncated
+        j = idx[np.clip(z[:, 0].astype(int), 0, idx.size - 1)]
+        return -(W(result.psi[j], result.lambda0[j, None] * unit_vectors(z[:, 1:], n) * a) - c)
+
+    sup_ball = -adversary_minimum(w_in_ball, [(0.0, idx.size - 1e-9)] + box(n, T)[1:], evaluations)
+    max_dw = band_maximum(W, dW, a, T, c, A, 10 * evaluations, quadratic=quadratic)
+    return Attack(min_w, sup_ball, max_dw, 10 * evaluations)
+
+
+def worst_start_peak(f, result, *, n_periods: float = 20.0, n_dir: int = 32, rounds: int = 3,
+                     n_azimuths: int = 4) -> float:
+    """Largest peak norm / ``A`` of motions started at ``0.99 lambda0_j``, the start direction
+    chosen by optimisation: the best of ``n_dir`` directions at each of ``n_azimuths`` certified
+    azimuths (evenly spread; one if nothing depends on the azimuth), then improved by ``rounds``
+    of 16 perturbations (all motions of a round integrated together)."""
+    n, a = result.scales.size, result.scales
+    rng = np.random.default_rng(7)
+    worst = 0.0
+    certified = np.flatnonzero(result.stable)
+    for j in certified[::max(1, certified.size // n_azimuths)][:n_azimuths]:
+        r0 = 0.99 * result.lambda0[j]
+
+        def peaks(u):
+            sim = simulate(f, r0 * u * a, result.psi[j], n_periods, period=result.period, scales=a,
+                           escape=10.0 * result.A)
+            return np.where(sim.escaped, np.inf, sim.max_norm)
+
+        u = rng.normal(size=(n_dir, n))
+        u /= np.linalg.norm(u, axis=1, keepdims=True)
+        p = peaks(u)
+        best_u, best_p = u[np.argmax(p)], p.max()
+        step = 0.3
+        for _ in range(rounds):
+            cand = best_u + step * rng.normal(size=(16, n))
+            cand /= np.linalg.norm(cand, axis=1, keepdims=True)
+            pc = peaks(cand)
+            if pc.max() > best_p:
+                best_u, best_p = cand[np.argmax(pc)], pc.max()
+            else:
+                step *= 0.5
+        worst = max(worst, best_p / result.A)
+    return worst
