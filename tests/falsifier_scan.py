@@ -96,3 +96,18 @@ def _hover_closed_forms_and_tightness(cell, hit) -> None:
         size = big ** 2 * np.abs(ev).max()
         assert fun.dW(p, x)[0] > -1e-6 * size, (f"no witness of W' > 0 on the sphere 1.01 A1 = {big:.4f}: "
                                                  "step 3's bound may be more than 1 % below the largest")
+
+
+def make_tests(case: str):
+    """The module fixture (the case's scan) and the parametrised test of one case's module."""
+
+    @pytest.fixture(scope="module")
+    def scan():
+        return scan_of(case)
+
+    @pytest.mark.slow
+    @pytest.mark.parametrize("key, mu", CELLS)
+    def test_certificate_survives_the_falsifier(scan, key, mu):
+        falsify(*scan, case, key, mu)
+
+    return scan, test_certificate_survives_the_falsifier
