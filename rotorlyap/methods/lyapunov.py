@@ -663,13 +663,11 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     n_sweep : int
         Without ``per_psi``: the best 256 polished candidates are then swept over ``n_sweep``
         azimuths of the period (each its ray and ``t`` kept), and the best 16 of the sweep are
-        polished again. The
-        largest ``W'`` about a computed periodic motion ripples in ``psi`` with the period of
-        its collocation grid (the motion's residual between nodes, ~2.8 deg for 256 points;
-        1024 azimuths put eight points on each ripple),
-        and a local ascent started at a grid azimuth stops on the nearest ripple; an
-        independent search found ``W' > 0`` on bands that the polish alone called negative.
-        0 switches the sweep off.
+        polished again. The largest ``W'`` about a computed periodic motion ripples in ``psi``
+        with the period of its collocation grid (the motion's residual between nodes, ~2.8 deg
+        for 256 points; 1024 azimuths put eight points on each ripple), and a local ascent
+        started at a grid azimuth stops on the nearest ripple; an independent search found
+        ``W' > 0`` on bands that the polish alone called negative. 0 switches the sweep off.
 
     Returns
     -------
@@ -702,22 +700,19 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         # would start every local search there, missing a narrow cap of W' > 0 on the sphere
         if starts not in ("levels", "band"):
             raise ValueError(f"starts must be 'levels' or 'band', got {starts!r}")
-        levels = np.linspace(T_MIN, 1.0, n_levels) if n_levels > 1 else np.ones(1)
-        per = max(1, -(-n_polish // levels.size))
+        if starts == "band":  # one search of the whole band (t sampled at n_levels values)
+            searches = [dict(radius=None, shell=(np.full(k, T_MIN), np.ones(k)), n_levels=n_levels,
+                             keep=n_polish)]
+        else:  # one sphere search per level t
+            levels = np.linspace(T_MIN, 1.0, n_levels) if n_levels > 1 else np.ones(1)
+            per = max(1, -(-n_polish // levels.size))
+            searches = [dict(radius=float(t), keep=per) for t in levels]
         parts = []
-        if starts == "band":
-            e = sphere_extremum(g, psi, None, np.ones(n), dirs, per_psi=False, free_psi=True,
-                                period=period, shell=(np.full(k, T_MIN), np.ones(k)),
-                                n_levels=n_levels, n_refine=max(n_refine, n_polish), n_iter=n_iter,
-                                stop_above=stop_above, keep=n_polish)
-            if stop_above is not None and e.value[0] > stop_above:
-                return Extremum(e.value[:1], e.psi[:1], state(e.psi[:1], e.x[:1]))
-            parts.append(e)
-            levels = levels[:0]
-        for t in levels:
-            e = sphere_extremum(g, psi, float(t), np.ones(n), dirs, per_psi=False, free_psi=True,
-                                period=period, n_refine=max(n_refine, per), n_iter=n_iter,
-                                stop_above=stop_above, keep=per)
+        for opts in searches:
+            radius = opts.pop("radius")
+            e = sphere_extremum(g, psi, radius, np.ones(n), dirs, per_psi=False, free_psi=True,
+                                period=period, n_refine=max(n_refine, opts["keep"]), n_iter=n_iter,
+                                stop_above=stop_above, **opts)
             if stop_above is not None and e.value[0] > stop_above:
                 return Extremum(e.value[:1], e.psi[:1], state(e.psi[:1], e.x[:1]))
             parts.append(e)
