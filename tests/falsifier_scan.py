@@ -1,4 +1,5 @@
-"""The falsifier on every certificate of chapter 7's scan, one Table I case per test module.
+"""The falsifier on every certificate of chapter 7's scan, one Table I case per test module:
+the hover certificates in the test run, every advance ratio with ``ROTORLYAP_FALSIFIER=all``.
 
 Not a test module: ``test_falsifier_forward.py``, ``test_falsifier_neutral.py`` and
 ``test_falsifier_backward.py`` call :func:`make_tests` for their case (three files, so that
@@ -21,6 +22,8 @@ certified ``A`` is at most ``A1``.
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 import pytest
 
@@ -30,19 +33,29 @@ from rotorlyap.methods.sampling import sphere_extremum, unit_sphere_points
 
 from falsifier import attack, worst_start_peak
 
-#: Scan cells per case: the strict candidates at every advance ratio of the chapter. In hover
+#: Which advance ratios are attacked (environment variable ``ROTORLYAP_FALSIFIER``): ``hover``
+#: (the default: every hover certificate, within the test run's time on two cores) or ``all``
+#: (every advance ratio of the chapter: about an hour on two cores; README, "The falsifier").
+SCOPES = {"hover": (0.0,), "all": fv.MU_SCAN}
+SCOPE = os.environ.get("ROTORLYAP_FALSIFIER", "hover")
+if SCOPE not in SCOPES:
+    raise ValueError(f"ROTORLYAP_FALSIFIER must be one of {sorted(SCOPES)}, got {SCOPE!r}")
+MU = SCOPES[SCOPE]
+
+#: Scan cells per case: the strict candidates at every advance ratio of :data:`MU`. In hover
 #: the candidates about the hover equilibrium are the same certificates as those about the
 #: periodic motion (which is the hover equilibrium there), so they are attacked once.
 STRICT = tuple(c.key for c in fv.CANDIDATES if c.reading == "strict")
-CELLS = tuple((key, mu) for mu in fv.MU_SCAN for key in STRICT
+CELLS = tuple((key, mu) for mu in MU for key in STRICT
               if not (mu == 0.0 and fv.CANDIDATES[[c.key for c in fv.CANDIDATES].index(key)].steady == "hover"))
 
 
 def scan_of(case: str):
-    """The chapter's scan restricted to one case: its steady motions and strict candidates."""
-    motions = fv.steady_motions((case,), fv.MU_SCAN)
+    """The chapter's scan restricted to one case and the advance ratios :data:`MU`: its steady
+    motions and strict candidates (each cell computed as the chapter computes it)."""
+    motions = fv.steady_motions((case,), MU)
     cands = tuple(c for c in fv.CANDIDATES if c.reading == "strict")
-    scan = fv.scan_data(motions, candidates=cands, cases=(case,), mu_values=fv.MU_SCAN, **fv.SCAN_OPTIONS)
+    scan = fv.scan_data(motions, candidates=cands, cases=(case,), mu_values=MU, **fv.SCAN_OPTIONS)
     return scan, motions
 
 

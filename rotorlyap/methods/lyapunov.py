@@ -101,8 +101,10 @@ class TechnicalStabilityResult:
         ``rule="sound"``: the largest ``W'`` found on the band ``||x|| <= A, W >= c`` over the
         whole period (negative, below the margin, where certified); NaN for the paper's rule.
     check_evaluations : int
-        ``rule="sound"``: the evaluations spent in the final check of the certified bound (the
-        thorough band search at ``A``); the part of ``n_evaluations`` an adversary must beat.
+        ``rule="sound"``: the states at which the final check of the certified bound (the
+        thorough band search at ``A``) evaluated ``W'``: the search an adversary must beat. (The
+        ``W`` evaluations that place each point on the band, up to some 60 per point where
+        ``W`` is not a quadratic form, are counted in ``n_evaluations`` only.)
     A_step3 : float
         Step 3's bound ``A1``: the largest radius up to ``A_requested`` with ``W' <= 0`` on the
         sphere itself over the period (0 if none). The paper's rule uses it as ``A``; the sound
@@ -154,7 +156,8 @@ class _Checked:
 
     def __init__(self, f: Function, W: Function, dW: Function | None, n: int, fd_step: float):
         self.f, self.W, self.dW_user, self.n, self.h = f, W, dW, n, fd_step
-        self.count = 0
+        self.count = 0     # states at which W or W' was evaluated
+        self.count_dw = 0  # states at which W' was evaluated (the points a search examined)
 
     def _check(self, name: str, out, shape, psi, x) -> np.ndarray:
         try:
@@ -184,6 +187,7 @@ class _Checked:
         return self._check("f", self.f(psi, x), x.shape, psi, x)
 
     def dw(self, psi: np.ndarray, x: np.ndarray) -> np.ndarray:
+        self.count_dw += x.shape[0]
         if self.dW_user is not None:
             self.count += x.shape[0]
             return self._check("dW", self.dW_user(psi, x), (x.shape[0],), psi, x)
@@ -893,9 +897,9 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
     # search missed, the bound steps down (0.5 % steps, then 3 %) until the thorough search passes
     check_evaluations = 0
     for step in range(70 if A_used > 0 else 0):
-        count = sys.count
+        count = sys.count_dw
         ok_t, alpha_t, worst_t, need_t = passes(A_used, thorough=True)
-        check_evaluations = sys.count - count
+        check_evaluations = sys.count_dw - count
         if ok_t:
             alpha, worst, need = alpha_t, worst_t, need_t
             break
