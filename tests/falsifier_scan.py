@@ -35,7 +35,7 @@ from falsifier import attack, worst_start_peak
 
 #: Which advance ratios are attacked (environment variable ``ROTORLYAP_FALSIFIER``): ``hover``
 #: (the default: every hover certificate, within the test run's time on two cores) or ``all``
-#: (every advance ratio of the chapter: about an hour on two cores; README, "The falsifier").
+#: (every advance ratio of the chapter: about an hour of one core more; README, "The falsifier").
 SCOPES = {"hover": (0.0,), "all": fv.MU_SCAN}
 SCOPE = os.environ.get("ROTORLYAP_FALSIFIER", "hover")
 if SCOPE not in SCOPES:

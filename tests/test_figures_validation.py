@@ -357,7 +357,8 @@ def test_rule_changes_list_the_cells_whose_verdict_or_bounds_moved():
                           lambda0_paper=np.array([[0.0297]]), lambda0_sound=np.array([[0.0294]]), n_psi=24)
     assert not near.changed().any()  # 0.3 % and 1 %: within what the searches determine
     assert d.rows()[1] == ("quadratic Q = I, backward C.G.", "0.2", "8 -> 0", "0.30 -> 0", "0.010 -> -")
-    assert d.facts() == {"ch7_rule_changed": 2, "ch7_rule_cells": 4, "ch7_rule_lost": 1, "ch7_rule_gained": 0}
+    assert d.facts() == {"ch7_rule_changed": 2, "ch7_rule_cells": 4, "ch7_rule_rtol_pct": 2.0, "ch7_rule_lost": 1,
+                         "ch7_rule_gained": 0}
     assert d.summary().splitlines()[-1] == ("changed: 2 of 4 cells; certified by the paper's rule only: 1; "
                                             "never the reverse: True")
     assert d.markdown().splitlines()[0].startswith("| function, case | mu | azimuths certified (of 24) |")
@@ -413,7 +414,7 @@ def validations():
 
 def test_validation_counts_each_certified_motion_once(validations):
     assert validations.counts() == (10, 6, 0)
-    assert validations.summary().splitlines()[-2] == "motions: 10 ; certified (strict): 6 ; certified but beyond A1: 0"
+    assert validations.summary().splitlines()[-2] == "motions: 10 ; certified (strict): 6 ; certified but beyond their bound: 0"
 
 
 def test_validation_facts_compare_the_observed_bounded_region_with_the_certified_one(validations):
@@ -431,6 +432,20 @@ def test_validation_table_has_a_row_per_function_and_validation(validations, tmp
     figure_csv(validations.export(), tmp_path / "v.csv")
     fig = fv.figure_validation(validations)
     assert len(fig.axes) == 1 and _closed(fig)
+
+
+def test_validation_legend_names_every_group_drawn_in_any_panel(validations):
+    """A start certified by Q = I alone, drawn only in the second panel, is named in the first
+    panel's legend (the only legend), as are the certified bounds."""
+    import matplotlib.pyplot as plt
+    only_q = _validation(
+        "forward C.G., mu = 0.25", ("quadratic", "quadratic-opt"), ("strict", "strict"), [0.1, 0.5],
+        [0.1, 0.5], [[1, 0], [0, 0]], [0.3, 0.0])
+    fig, axes = plt.subplots(1, 2)
+    fv.plot_validation((validations.forward[0], only_q), axes)
+    labels = [t.get_text() for t in axes[0].get_legend().get_texts()]
+    plt.close(fig)
+    assert "certified by Q = I only" in labels and "certified $A$, Q = I" in labels
 
 
 # --------------------------------------------------------------------------------------
