@@ -20,6 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .conventions import MAX_ADVANCE_RATIO
+
 __all__ = ["main"]
 
 CG_CHOICES = ("forward", "neutral", "backward")
@@ -75,7 +77,8 @@ def build_parser() -> argparse.ArgumentParser:
     a = sub.add_parser("analyse", help="one stability analysis of a Table I case, printed as JSON",
                        description="Run blade_stability for one Table I case and print the result as JSON.")
     a.add_argument("--cg", choices=CG_CHOICES, default="forward", help="section C.G. position (Table I)")
-    a.add_argument("--mu", type=_float_in("--mu", 0.0, 0.5), default=0.0, help="advance ratio, 0..0.5")
+    a.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
+                   help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
     a.add_argument("--A", type=_float_in("--A", 0.0, 1e3, open_lo=True), default=None,
                    help="bound of the scaled norm (default: the report's choice, 1)")
     a.add_argument("--scales", type=_scales, default=None,

@@ -14,7 +14,8 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
-    "DEFAULT_A", "DEFAULT_SCALES", "HINGES", "PAPER_TEST_DISTURBANCES", "STATE_NAMES", "TWO_PI",
+    "DEFAULT_A", "DEFAULT_SCALES", "HINGES", "MAX_ADVANCE_RATIO", "PAPER_TEST_DISTURBANCES",
+    "STATE_NAMES", "TWO_PI",
 ]
 
 TWO_PI = 2.0 * np.pi
@@ -27,6 +28,13 @@ HINGES: tuple[str, str, str] = ("flap", "lag", "pitch")
 """Hinge names, in the order of the state vector."""
 
 _DEG = np.pi / 180.0
+
+MAX_ADVANCE_RATIO = 3.0
+"""Largest advance ratio the analyses accept, -. The blade model is complete at any advance ratio
+(full-circle angle of attack, reverse flow, the free stream in every strip); 3 lies past the
+classical flap instability of a centrally hinged blade (near mu = 2.2 for a Lock number of 8),
+which the tests reproduce. Whether a section model is valid there is another matter:
+:mod:`rotorlyap.model.compressibility` maps where it is."""
 
 DEFAULT_SCALES = np.array([2.0 * _DEG, 2.0 * _DEG, 1.0 * _DEG, 2.0 * _DEG, 0.5 * _DEG, 5.0 * _DEG])
 """Default norm scales ``a_i`` (rad and rad/rad): a unit of the norm is 2 deg of flap or lag,

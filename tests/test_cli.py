@@ -45,7 +45,7 @@ def test_analyse_prints_the_result_as_json(capsys):
 @pytest.mark.parametrize(
     "args, message",
     [
-        (["analyse", "--mu", "0.7"], "--mu must lie in [0, 0.5]"),
+        (["analyse", "--mu", "3.5"], "--mu must lie in [0, 3]"),
         (["analyse", "--mu", "fast"], "--mu must be a number"),
         (["analyse", "--cg", "middle"], "invalid choice: 'middle'"),
         (["analyse", "--A", "-1"], "--A must lie in (0, 1000]"),

@@ -89,9 +89,9 @@ def test_wake_skew_is_zero_in_hover_and_90_deg_edgewise():
 
 
 def test_kx_published_values_at_90_deg_skew():
-    """At chi = 90 deg: Pitt-Peters 15 pi/23, Coleman tan 45 = 1, Drees 4/3 (1 - 1.8 mu^2), Glauert 1.2."""
+    """At chi = 90 deg: Pitt-Peters 15 pi/32 (Chen1990, Table 1), Coleman tan 45 = 1, Drees 4/3 (1 - 1.8 mu^2), Glauert 1.2."""
     mu, lam = 0.2, 0.0
-    assert kx_factor("pitt-peters", mu, lam) == pytest.approx(15 * math.pi / 23)
+    assert kx_factor("pitt-peters", mu, lam) == pytest.approx(15 * math.pi / 32)
     assert kx_factor("coleman", mu, lam) == pytest.approx(1.0)
     assert kx_factor("drees", mu, lam) == pytest.approx(4 / 3 * (1 - 1.8 * mu**2))
     assert kx_factor("glauert", mu, lam) == 1.2
@@ -104,7 +104,7 @@ def test_drees_equals_its_published_form_at_intermediate_skew():
     published = 4 / 3 * (1 - math.cos(chi) - 1.8 * mu**2) / math.sin(chi)
     assert kx_factor("drees", mu, lam) == pytest.approx(published, rel=1e-13)
     assert kx_factor("coleman", mu, lam) == pytest.approx(math.tan(chi / 2))
-    assert kx_factor("pitt-peters", mu, lam) == pytest.approx(15 * math.pi / 23 * math.tan(chi / 2))
+    assert kx_factor("pitt-peters", mu, lam) == pytest.approx(15 * math.pi / 32 * math.tan(chi / 2))
 
 
 @pytest.mark.parametrize("model", INFLOW_MODELS)
@@ -156,3 +156,21 @@ def test_inflow_ratio_override_and_uniform_model(forward):
 def test_induced_inflow_in_vacuum_is_zero(forward):
     q = dataclasses.replace(forward, air_density=0.0)
     assert np.all(induced_inflow(q, 0.1, 1.0, np.array([0.0, 1.0])) == 0.0)
+
+
+@pytest.mark.parametrize("mu, tilt_deg", [(0.05, 2.0), (0.15, 4.0), (0.3, 8.0), (1.0, 10.0)])
+def test_momentum_inflow_with_a_tilted_disc_satisfies_glauerts_formula(mu, tilt_deg):
+    """Glauert's momentum formula for a disc tilted forward by alpha_s (Johnson 1980, eq. 4.1):
+    lambda = mu tan(alpha_s) + C_T / (2 sqrt(mu^2 + lambda^2)), lambda the whole inflow; the
+    tilt's through-flow lowers the induced part below the untilted value."""
+    ct = 0.008
+    lc = mu * math.tan(math.radians(tilt_deg))
+    li = momentum_inflow(ct, mu, through_flow=lc)
+    lam = lc + li
+    assert lam == pytest.approx(lc + ct / (2.0 * math.sqrt(mu * mu + lam * lam)), rel=1e-12)
+    assert li < momentum_inflow(ct, mu)
+
+
+def test_momentum_inflow_refuses_a_negative_through_flow():
+    with pytest.raises(ValueError, match="through_flow must be >= 0"):
+        momentum_inflow(0.008, 0.2, through_flow=-0.01)

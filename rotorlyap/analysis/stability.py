@@ -20,7 +20,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..conventions import DEFAULT_A, DEFAULT_SCALES, STATE_NAMES
+from ..conventions import DEFAULT_A, DEFAULT_SCALES, MAX_ADVANCE_RATIO, STATE_NAMES
 from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
 from ..model.blade import Blade
 from ..model.parameters import BladeParameters
@@ -91,8 +91,8 @@ def blade_stability(
     if not isinstance(params, BladeParameters):
         raise TypeError(f"params must be a BladeParameters, got {type(params).__name__}")
     mu = float(mu)
-    if not (np.isfinite(mu) and 0.0 <= mu <= 0.5):
-        raise ValueError(f"mu must be an advance ratio in [0, 0.5], got {mu!r}")
+    if not (np.isfinite(mu) and 0.0 <= mu <= MAX_ADVANCE_RATIO):
+        raise ValueError(f"mu must be an advance ratio in [0, {MAX_ADVANCE_RATIO:g}], got {mu!r}")
     if scales is not None and np.size(scales) != 6:
         raise ValueError(
             f"scales must hold 6 positive numbers, one per state component {STATE_NAMES}, "

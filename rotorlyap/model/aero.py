@@ -3,7 +3,8 @@
 Quasi-steady 2-D strips at ``params.n_stations`` Gauss-Legendre stations on ``[R - R1, R]``.
 At each station the air velocity relative to the section's wind point, in blade components,
 is ``w = C_BH a_H - v`` with the air velocity relative to the hub ``a_N = (mu Omega R, 0,
--lambda_i Omega R)`` (``a_H = (mu Omega R cos psi, -mu Omega R sin psi, -lambda_i Omega R)``)
+-(lambda_i + mu tan alpha_s) Omega R)`` (``alpha_s`` = ``params.shaft_tilt``, the forward tilt of
+the shaft; ``mu`` is the in-plane advance ratio) (``a_H = (mu Omega R cos psi, -mu Omega R sin psi, -lambda_i Omega R)``)
 and ``v = v_P + omega x rho`` the inertial velocity of the wind point. Only the in-plane
 components ``(w_y, w_z)`` are used (no radial flow effects). The angle of attack is
 ``alpha = atan2(w_z, -w_y) + phi(r)`` over the full circle, with ``phi`` the pretwist; lift
@@ -103,7 +104,9 @@ class StripAerodynamics:
         a, b = lam_90, lam_0 - lam_90
         if not np.allclose(a + b * math.cos(2.0), lam_t, rtol=1e-12, atol=1e-14):
             raise ValueError("induced_inflow is not of the form lambda_0 (1 + k_x r cos psi)")
-        self._inflow_a = _column(-a * VR)  # z_H air velocity, m/s (downward inflow)
+        # z_H air velocity, m/s: the induced inflow and, for a shaft tilted forward, the free
+        # stream's part through the disc, mu tan(shaft_tilt) (the in-plane part is mu Omega R)
+        self._inflow_a = _column(-(a + mu * math.tan(p.shaft_tilt)) * VR)
         self._inflow_b = _column(-b * VR)
         self._inflow_uniform_in_psi = bool(np.all(b == 0.0))
         self._mu_VR = mu * VR

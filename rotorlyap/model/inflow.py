@@ -26,6 +26,8 @@ References
 - [Coleman1945] R. P. Coleman, A. M. Feingold and C. W. Stempin, NACA ARR L5E10, 1945.
 - [Drees1949] J. M. Drees, J. Helicopter Assoc. Great Britain 3(2), 1949.
 - [PittPeters1981] D. M. Pitt and D. A. Peters, Vertica 5(1), 1981.
+- [Chen1990] R. T. N. Chen, "A survey of nonuniform inflow models for rotorcraft flight
+  dynamics and control applications", NASA TM-102219, 1989 (Vertica 14(2), 1990).
 """
 
 from __future__ import annotations
@@ -49,6 +51,11 @@ __all__ = [
 
 #: Glauert's constant longitudinal inflow gradient [Glauert1926], [Johnson1980].
 GLAUERT_KX = 1.2
+
+#: The steady first-harmonic inflow of Pitt and Peters' model, ``k_x = 15 pi/32 tan(chi/2)``
+#: [PittPeters1981], as tabulated by [Chen1990] (NASA TM-102219, whose survey lists every linear
+#: model with its source; some textbook tables print 15 pi/23, a misprint of the same constant).
+PITT_PETERS_KX = 15.0 * math.pi / 32.0
 
 
 def thrust_coefficient(params: BladeParameters) -> float:
@@ -90,30 +97,35 @@ def _check_nonneg(name: str, x: ArrayLike) -> NDArray[np.float64]:
     return a
 
 
-def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: int = 50) -> float | NDArray[np.float64]:
+def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: int = 50, *,
+                    through_flow: ArrayLike = 0.0) -> float | NDArray[np.float64]:
     """Mean induced inflow ratio from momentum theory [Johnson1980], [Leishman2006].
 
-    Hover: ``lambda = sqrt(C_T / 2)``.  Forward flight, untilted disc:
-    ``lambda = C_T / (2 sqrt(mu^2 + lambda^2))``, solved by Newton's method on
-    ``f(lambda) = 2 lambda sqrt(mu^2 + lambda^2) - C_T`` started from the hover
-    value; ``f`` is increasing and convex for ``lambda > 0`` and ``f >= 0`` at
-    the start, so the iterates decrease monotonically to the unique root.
+    Hover: ``lambda_i = sqrt(C_T / 2)``.  Forward flight (Glauert's formula):
+    ``lambda_i = C_T / (2 sqrt(mu^2 + (lambda_c + lambda_i)^2))`` with ``lambda_c =
+    through_flow = mu tan(alpha_s)`` the free stream's flow down through a disc tilted forward
+    by ``alpha_s`` (0 for an untilted disc), solved by Newton's method on ``f(lambda_i) = 2
+    lambda_i sqrt(mu^2 + (lambda_c + lambda_i)^2) - C_T`` started from the hover value; for
+    ``lambda_c >= 0``, ``f`` is increasing and convex for ``lambda_i > 0`` and ``f >= 0`` at the
+    start, so the iterates decrease monotonically to the unique root.
 
     Parameters
     ----------
     ct : array_like
         Thrust coefficient, >= 0.
     mu : array_like
-        Advance ratio ``V / (Omega R)``, >= 0 (broadcast with ``ct``).
+        Advance ratio ``V cos(alpha_s) / (Omega R)``, >= 0 (broadcast with ``ct``).
     tol : float
         Convergence tolerance on the Newton step, relative to the hover inflow.
     maxiter : int
         Maximum number of Newton iterations.
+    through_flow : array_like
+        ``lambda_c = mu tan(alpha_s)``, the free stream's inflow ratio through the disc, >= 0.
 
     Returns
     -------
     float or ndarray
-        lambda_0, positive downwards, -; a float for scalar inputs.
+        lambda_i, the induced inflow ratio, positive downwards, -; a float for scalar inputs.
 
     Raises
     ------
@@ -124,15 +136,17 @@ def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: i
     """
     ct_a = _check_nonneg("ct", ct)
     mu_a = _check_nonneg("mu", mu)
-    ct_a, mu_a = np.broadcast_arrays(ct_a, mu_a)
+    lc_a = _check_nonneg("through_flow", through_flow)
+    ct_a, mu_a, lc_a = np.broadcast_arrays(ct_a, mu_a, lc_a)
     lam_h = np.sqrt(0.5 * ct_a)
     lam = lam_h.copy()
     scale = np.where(lam_h > 0, lam_h, 1.0)
     converged = False
     for _ in range(maxiter):
-        s = np.sqrt(mu_a * mu_a + lam * lam)
+        tot = lc_a + lam
+        s = np.sqrt(mu_a * mu_a + tot * tot)
         f = 2.0 * lam * s - ct_a
-        fp = 2.0 * s + 2.0 * lam * lam / np.where(s > 0, s, 1.0)
+        fp = 2.0 * s + 2.0 * lam * tot / np.where(s > 0, s, 1.0)
         step = np.where(fp > 0, f / np.where(fp > 0, fp, 1.0), 0.0)
         lam = lam - step
         if np.all(np.abs(step) <= tol * scale):
@@ -176,7 +190,7 @@ def kx_factor(model: str, mu: ArrayLike, lam: ArrayLike) -> float | NDArray[np.f
     uniform     0                                        --
     glauert     1.2 for mu > 0, 0 in hover               [Glauert1926], [Johnson1980]
     drees       4/3 (1 - cos chi - 1.8 mu^2) / sin chi   [Drees1949], [Leishman2006]
-    pitt-peters 15 pi / 23 tan(chi/2)                    [PittPeters1981], [Leishman2006]
+    pitt-peters 15 pi / 32 tan(chi/2)                    [PittPeters1981], [Chen1990]
     coleman     tan(chi/2)                               [Coleman1945], [Leishman2006]
     =========== ======================================== =================================
 
@@ -219,7 +233,7 @@ def kx_factor(model: str, mu: ArrayLike, lam: ArrayLike) -> float | NDArray[np.f
     elif model == "drees":
         kx = 4.0 / 3.0 * (np.tan(0.5 * chi) - 1.8 * mu_a * np.hypot(mu_a, lam_a))
     elif model == "pitt-peters":
-        kx = 15.0 * math.pi / 23.0 * np.tan(0.5 * chi)
+        kx = PITT_PETERS_KX * np.tan(0.5 * chi)
     else:  # coleman
         kx = np.tan(0.5 * chi)
     return float(kx) if kx.ndim == 0 else kx
@@ -229,7 +243,8 @@ def mean_inflow(params: BladeParameters, mu: float) -> float:
     """Mean induced inflow ratio lambda_0 used by the blade model.
 
     ``params.inflow_ratio`` if it is not None; otherwise momentum theory with
-    thrust = weight (:func:`thrust_coefficient`, :func:`momentum_inflow`);
+    thrust = weight (:func:`thrust_coefficient`, :func:`momentum_inflow`, with the
+    through-flow ``mu tan(params.shaft_tilt)`` of a tilted shaft);
     0 in vacuum (``air_density == 0``: no air, no induced velocity).
 
     Parameters
@@ -248,7 +263,8 @@ def mean_inflow(params: BladeParameters, mu: float) -> float:
         return float(params.inflow_ratio)
     if params.air_density == 0.0:
         return 0.0
-    return float(momentum_inflow(thrust_coefficient(params), mu_f))
+    return float(momentum_inflow(thrust_coefficient(params), mu_f,
+                                 through_flow=mu_f * math.tan(params.shaft_tilt)))
 
 
 def induced_inflow(params: BladeParameters, mu: float, r_over_R: ArrayLike, psi: ArrayLike) -> NDArray[np.float64]:
@@ -272,7 +288,8 @@ def induced_inflow(params: BladeParameters, mu: float, r_over_R: ArrayLike, psi:
         ``r_over_R`` and ``psi``.
     """
     lam0 = mean_inflow(params, mu)
-    kx = float(kx_factor(params.inflow_model, mu, lam0))
+    # the wake skew follows the whole flow through the disc, free stream included
+    kx = float(kx_factor(params.inflow_model, mu, lam0 + mu * math.tan(params.shaft_tilt)))
     r = np.asarray(r_over_R, dtype=np.float64)
     p = np.asarray(psi, dtype=np.float64)
     return lam0 * (1.0 + kx * r * np.cos(p))

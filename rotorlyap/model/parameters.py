@@ -39,8 +39,10 @@ from .airfoil import NACA23012, Airfoil, LinearAirfoil
 __all__ = [
     "BladeParameters",
     "CG_POSITIONS",
+    "COMPRESSIBILITY_MODELS",
     "FIELD_INFO",
     "INFLOW_MODELS",
+    "ISA_SPEED_OF_SOUND",
     "TABLE_I_AIRFOIL",
     "THIN_AIRFOIL_CM_Q",
     "parameter_table",
@@ -48,6 +50,13 @@ __all__ = [
 
 INFLOW_MODELS: tuple[str, ...] = ("uniform", "glauert", "drees", "pitt-peters", "coleman")
 """Inflow models :func:`rotorlyap.model.inflow.kx_factor` knows (``BladeParameters.inflow_model``)."""
+
+COMPRESSIBILITY_MODELS: tuple[str, ...] = ("none", "prandtl-glauert")
+"""Compressibility corrections of the section loads (``BladeParameters.compressibility``):
+none, or the Prandtl-Glauert lift slope with a drag rise (:mod:`rotorlyap.model.compressibility`)."""
+
+#: ISA sea-level speed of sound, m/s (ICAO standard atmosphere: 340.294 m/s at 288.15 K).
+ISA_SPEED_OF_SOUND: float = 340.294
 
 
 #: Section centre-of-gravity positions of the paper's three cases, fraction of
@@ -109,9 +118,13 @@ FIELD_INFO: dict[str, tuple[str, str]] = {
     "cyclic_cos": ("rad", "assumed: no cyclic pitch"),
     "cyclic_sin": ("rad", "assumed: no cyclic pitch"),
     "n_stations": ("-", "assumed: 12 Gauss-Legendre stations on the aerodynamic span"),
+    "shaft_tilt": ("rad", "assumed: 0, untilted shaft (the paper's condition); set by the forward-flight trim"),
+    "compressibility": ("-", "assumed: none (the paper's section model has no Mach dependence)"),
+    "speed_of_sound": ("m/s", "assumed: ISA sea level, 340.294 m/s"),
 }
 
-_POSITIVE = ("radius", "blade_length", "rotor_speed", "helicopter_mass", "pitch_radius_of_gyration")
+_POSITIVE = ("radius", "blade_length", "rotor_speed", "helicopter_mass", "pitch_radius_of_gyration",
+             "speed_of_sound")
 _NONNEGATIVE = ("pitch_stiffness", "lag_damping", "flap_stiffness", "lag_stiffness", "flap_damping",
                 "pitch_damping", "air_density", "gravity")
 _FINITE = ("twist", "pitch_flap_coupling", "cyclic_cos", "cyclic_sin", "cm_pitch_rate")
@@ -260,6 +273,18 @@ class BladeParameters:
     n_stations : int
         Number of Gauss-Legendre stations on the aerodynamic span, >= 1.
         Assumed: 12.
+    shaft_tilt : float
+        Forward tilt of the rotor shaft from the vertical, rad, in [0, 30 deg): the free stream
+        ``V`` then has the in-plane part ``mu Omega R = V cos(shaft_tilt)`` and flows down through
+        the disc at ``mu tan(shaft_tilt) Omega R``, added to the induced inflow. Assumed: 0 (the
+        paper's untilted disc); :func:`rotorlyap.model.forward_trim.forward_flight_trim` sets it so
+        that the rotor force balances the weight and the fuselage drag.
+    compressibility : str
+        One of :data:`COMPRESSIBILITY_MODELS`: ``"none"`` (the paper's incompressible sections)
+        or ``"prandtl-glauert"`` (:mod:`rotorlyap.model.compressibility`).  Assumed: "none".
+    speed_of_sound : float
+        Speed of sound, m/s, > 0 (the section Mach number is the section air speed over it).
+        Assumed: 340.294, ISA sea level.
     """
 
     radius: float = 7.85
@@ -293,6 +318,9 @@ class BladeParameters:
     cyclic_cos: float = 0.0
     cyclic_sin: float = 0.0
     n_stations: int = 12
+    shaft_tilt: float = 0.0
+    compressibility: str = "none"
+    speed_of_sound: float = ISA_SPEED_OF_SOUND
 
     # ------------------------------------------------------------------ validation
     def __post_init__(self) -> None:
@@ -331,6 +359,13 @@ class BladeParameters:
                 if name == "inflow_ratio" and v < 0:
                     raise ValueError(f"inflow_ratio must be None or >= 0, got {v!r}")
                 set_(name, v)
+        tilt = _real("shaft_tilt", self.shaft_tilt, "a forward tilt in [0, 30 deg) = [0, 0.5236) rad")
+        if not 0.0 <= tilt < math.radians(30.0):
+            raise ValueError(f"shaft_tilt must lie in [0, 30 deg) = [0, 0.5236) rad (a forward tilt; an aft "
+                             f"tilt puts the disc in the windmill state, outside momentum theory), got {tilt!r}")
+        set_("shaft_tilt", tilt)
+        if not isinstance(self.compressibility, str) or self.compressibility not in COMPRESSIBILITY_MODELS:
+            raise ValueError(f"compressibility must be one of {COMPRESSIBILITY_MODELS}, got {self.compressibility!r}")
         set_("n_blades", _int("n_blades", self.n_blades, 1))
         set_("n_stations", _int("n_stations", self.n_stations, 1))
 

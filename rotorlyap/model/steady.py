@@ -36,7 +36,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..conventions import TWO_PI
+from ..conventions import MAX_ADVANCE_RATIO, TWO_PI
 from ..errors import PeriodicMotionError
 from ..jit import jit, use_compiled
 from .blade import Blade
@@ -325,7 +325,7 @@ def periodic_motion(
     params : BladeParameters
         The blade; a ``None`` collective is trimmed in hover (thrust = weight) and kept.
     mu : float
-        Advance ratio in [0, 0.5]. At ``mu = 0`` the solution is the hover equilibrium.
+        Advance ratio in [0, MAX_ADVANCE_RATIO]. At ``mu = 0`` the solution is the hover equilibrium.
     trim_flapping : bool
         Also trim ``cyclic_cos`` and ``cyclic_sin`` (rad) so that the first harmonics of
         flapping vanish (the disc stays perpendicular to the shaft).
@@ -354,8 +354,8 @@ def periodic_motion(
         For a bad ``mu`` or ``n_points``.
     """
     mu = float(mu)
-    if not (np.isfinite(mu) and 0.0 <= mu <= 0.5):
-        raise ValueError(f"mu must be an advance ratio in [0, 0.5], got {mu!r}")
+    if not (np.isfinite(mu) and 0.0 <= mu <= MAX_ADVANCE_RATIO):
+        raise ValueError(f"mu must be an advance ratio in [0, {MAX_ADVANCE_RATIO:g}], got {mu!r}")
     if not (isinstance(n_points, int) and n_points >= 8 and n_points % 2 == 0):
         raise ValueError(f"n_points must be an even integer >= 8, got {n_points!r}")
     hover = Blade(params, 0.0)
