@@ -47,7 +47,7 @@ class ConvergenceError(RuntimeError):
 
 
 class TrimError(ConvergenceError):
-    """The hover trim (thrust = weight) failed.
+    """A trim failed: the hover trim (thrust = weight) or the forward-flight trim.
 
     Attributes
     ----------

@@ -107,7 +107,9 @@ def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: i
     by ``alpha_s`` (0 for an untilted disc), solved by Newton's method on ``f(lambda_i) = 2
     lambda_i sqrt(mu^2 + (lambda_c + lambda_i)^2) - C_T`` started from the hover value; for
     ``lambda_c >= 0``, ``f`` is increasing and convex for ``lambda_i > 0`` and ``f >= 0`` at the
-    start, so the iterates decrease monotonically to the unique root.
+    start, so the iterates decrease monotonically to the unique root. A small negative
+    ``lambda_c`` (a disc tilted slightly aft) is allowed; a whole inflow ``lambda_c + lambda_i``
+    that is not positive (the windmill states, where momentum theory fails) is refused.
 
     Parameters
     ----------
@@ -120,7 +122,8 @@ def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: i
     maxiter : int
         Maximum number of Newton iterations.
     through_flow : array_like
-        ``lambda_c = mu tan(alpha_s)``, the free stream's inflow ratio through the disc, >= 0.
+        ``lambda_c = mu tan(alpha_s)``, the free stream's inflow ratio through the disc (positive
+        down, a disc tilted forward).
 
     Returns
     -------
@@ -136,7 +139,9 @@ def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: i
     """
     ct_a = _check_nonneg("ct", ct)
     mu_a = _check_nonneg("mu", mu)
-    lc_a = _check_nonneg("through_flow", through_flow)
+    lc_a = np.asarray(through_flow, dtype=np.float64)
+    if not np.all(np.isfinite(lc_a)):
+        raise ValueError(f"through_flow must be finite, got {through_flow!r}")
     ct_a, mu_a, lc_a = np.broadcast_arrays(ct_a, mu_a, lc_a)
     lam_h = np.sqrt(0.5 * ct_a)
     lam = lam_h.copy()
@@ -152,6 +157,9 @@ def momentum_inflow(ct: ArrayLike, mu: ArrayLike, tol: float = 1e-13, maxiter: i
         if np.all(np.abs(step) <= tol * scale):
             converged = True
             break
+    if converged and not np.all((lam > 0) & (lc_a + lam > 0) | (ct_a == 0)):
+        raise ValueError(f"momentum_inflow: the whole inflow through the disc is not positive (ct={ct!r}, "
+                         f"mu={mu!r}, through_flow={through_flow!r}): a windmill state, outside momentum theory")
     if not converged:
         raise InflowConvergenceError(
             f"momentum_inflow did not converge in {maxiter} Newton iterations (ct={ct!r}, mu={mu!r})",

@@ -118,6 +118,8 @@ FIELD_INFO: dict[str, tuple[str, str]] = {
     "cyclic_cos": ("rad", "assumed: no cyclic pitch"),
     "cyclic_sin": ("rad", "assumed: no cyclic pitch"),
     "n_stations": ("-", "assumed: 12 Gauss-Legendre stations on the aerodynamic span"),
+    "flat_plate_area": ("m^2", "assumed: 2.4 m^2, the UH-1B's 19.5 ft^2 at 9500 lb (Prouty1986, Table 4.3) "
+                               "scaled to 6400 kg by weight^(2/3); f/A = 0.012"),
     "shaft_tilt": ("rad", "assumed: 0, untilted shaft (the paper's condition); set by the forward-flight trim"),
     "compressibility": ("-", "assumed: none (the paper's section model has no Mach dependence)"),
     "speed_of_sound": ("m/s", "assumed: ISA sea level, 340.294 m/s"),
@@ -126,7 +128,7 @@ FIELD_INFO: dict[str, tuple[str, str]] = {
 _POSITIVE = ("radius", "blade_length", "rotor_speed", "helicopter_mass", "pitch_radius_of_gyration",
              "speed_of_sound")
 _NONNEGATIVE = ("pitch_stiffness", "lag_damping", "flap_stiffness", "lag_stiffness", "flap_damping",
-                "pitch_damping", "air_density", "gravity")
+                "pitch_damping", "air_density", "gravity", "flat_plate_area")
 _FINITE = ("twist", "pitch_flap_coupling", "cyclic_cos", "cyclic_sin", "cm_pitch_rate")
 _FRACTION = ("pitch_axis",)
 # profiles (float or callable of r/R) and what they must satisfy
@@ -273,8 +275,14 @@ class BladeParameters:
     n_stations : int
         Number of Gauss-Legendre stations on the aerodynamic span, >= 1.
         Assumed: 12.
+    flat_plate_area : float
+        Equivalent flat-plate (parasite drag) area ``f`` of the helicopter without its rotor, m^2,
+        >= 0: the fuselage drag is ``0.5 rho V^2 f``, which the forward-flight trim balances.
+        Assumed: 2.4 m^2, the UH-1B's 19.5 ft^2 (1.81 m^2) at 9500 lb [Prouty1986, Table 4.3]
+        scaled to 6400 kg as weight^(2/3) (f/A = 0.012 of the Sokol's disc; the same table's
+        UH-1B has 0.013, Prouty advises adding 20 % to such estimates).
     shaft_tilt : float
-        Forward tilt of the rotor shaft from the vertical, rad, in [0, 30 deg): the free stream
+        Forward tilt of the rotor shaft from the vertical, rad, in (-30, 30) deg: the free stream
         ``V`` then has the in-plane part ``mu Omega R = V cos(shaft_tilt)`` and flows down through
         the disc at ``mu tan(shaft_tilt) Omega R``, added to the induced inflow. Assumed: 0 (the
         paper's untilted disc); :func:`rotorlyap.model.forward_trim.forward_flight_trim` sets it so
@@ -318,6 +326,7 @@ class BladeParameters:
     cyclic_cos: float = 0.0
     cyclic_sin: float = 0.0
     n_stations: int = 12
+    flat_plate_area: float = 2.4
     shaft_tilt: float = 0.0
     compressibility: str = "none"
     speed_of_sound: float = ISA_SPEED_OF_SOUND
@@ -359,10 +368,10 @@ class BladeParameters:
                 if name == "inflow_ratio" and v < 0:
                     raise ValueError(f"inflow_ratio must be None or >= 0, got {v!r}")
                 set_(name, v)
-        tilt = _real("shaft_tilt", self.shaft_tilt, "a forward tilt in [0, 30 deg) = [0, 0.5236) rad")
-        if not 0.0 <= tilt < math.radians(30.0):
-            raise ValueError(f"shaft_tilt must lie in [0, 30 deg) = [0, 0.5236) rad (a forward tilt; an aft "
-                             f"tilt puts the disc in the windmill state, outside momentum theory), got {tilt!r}")
+        tilt = _real("shaft_tilt", self.shaft_tilt, "a tilt in (-30, 30) deg = (-0.5236, 0.5236) rad")
+        if not abs(tilt) < math.radians(30.0):
+            raise ValueError(f"shaft_tilt must lie in (-30, 30) deg = (-0.5236, 0.5236) rad (positive forward), "
+                             f"got {tilt!r}")
         set_("shaft_tilt", tilt)
         if not isinstance(self.compressibility, str) or self.compressibility not in COMPRESSIBILITY_MODELS:
             raise ValueError(f"compressibility must be one of {COMPRESSIBILITY_MODELS}, got {self.compressibility!r}")

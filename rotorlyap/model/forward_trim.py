@@ -1,0 +1,318 @@
+"""Trim of the helicopter in forward flight: the rotor carries the weight and pulls against the drag.
+
+The paper keeps the hover collective, no cyclic pitch and an untilted disc at every advance
+ratio. Its blade then lifts far more than the weight in forward flight (the advancing side
+gains more than the retreating side loses). A trimmed helicopter instead balances, in the
+longitudinal plane and with the rotor as the only lifting and propulsive surface,
+
+* the weight ``W = helicopter_mass * gravity`` (vertical),
+* the drag of the airframe, ``D = 0.5 rho V^2 f`` with the equivalent flat-plate area ``f =
+  params.flat_plate_area`` (horizontal, aft),
+* the rotor's mean force: the thrust ``T`` along the shaft and the H-force ``H`` in the shaft
+  plane, aft, both the mean over a revolution of the blade's aerodynamic force resolved in the
+  non-rotating hub axes, times the number of blades (the blade's inertial force has zero mean
+  over a period of a periodic motion, so the aerodynamic mean is the whole hub force).
+
+With the shaft tilted forward by ``alpha_s`` (``params.shaft_tilt``) the balance reads
+[Johnson1980, ch. 5], [Leishman2006, ch. 5]::
+
+    T cos(alpha_s) + H sin(alpha_s) = W            (vertical)
+    T sin(alpha_s) - H cos(alpha_s) = D            (horizontal)
+
+and the flight speed is ``V = mu Omega R / cos(alpha_s)`` (``mu`` is the in-plane advance ratio
+of the blade model). The induced inflow is Glauert's momentum value for the thrust the blade
+actually produces and the whole flow through the disc, ``lambda_i = C_T / (2 sqrt(mu^2 + (mu
+tan(alpha_s) + lambda_i)^2))``. The cyclic pitch makes the first harmonics of flapping zero (the
+tip-path plane stays perpendicular to the shaft; with the small hinge offset of Table I, about
+1 % of the radius, the hub moment is then small too). The collective, the shaft tilt and the
+inflow are solved together by Newton's method with a finite-difference Jacobian; at each
+evaluation the periodic motion and its cyclic pitch come from
+:func:`rotorlyap.model.steady.periodic_motion`.
+
+Simplifications, stated: no fuselage pitching moment or download, no tail rotor, the lateral
+(side) force is reported but not balanced (a small roll of the helicopter would), and the blade's
+weight stays along the shaft (the tilt of a few degrees turns a fraction ``sin(alpha_s)`` of the
+blade weight, under 1 % of the centrifugal force, into the disc plane).
+
+The three conditions of the report (:data:`TRIM_TARGETS`):
+
+``"propulsive"``
+    the trimmed helicopter above (the report's default for forward flight);
+``"flapping"``
+    the paper's hover collective and inflow (thrust = weight in momentum theory, untilted disc),
+    with cyclic pitch for zero first-harmonic flapping;
+``"none"``
+    the paper's condition: hover collective, no cyclic, untilted disc, inflow for thrust = weight.
+
+Citation keys refer to the report's ``references.bib``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from functools import lru_cache
+
+import numpy as np
+
+from ..conventions import MAX_ADVANCE_RATIO, TWO_PI
+from ..errors import PeriodicMotionError, TrimError
+from .blade import Blade
+from .inflow import mean_inflow, momentum_inflow
+from .parameters import BladeParameters
+from .steady import PeriodicMotion, periodic_motion
+
+__all__ = ["TRIM_TARGETS", "ForwardFlightTrim", "forward_flight_trim", "rotor_forces"]
+
+TRIM_TARGETS: tuple[str, ...] = ("propulsive", "flapping", "none")
+"""Flight conditions :func:`forward_flight_trim` computes (see the module docstring)."""
+
+_N_AZIMUTH = 64  # collocation points of the periodic motion; the rotor forces are means over them
+
+
+@dataclass(frozen=True)
+class ForwardFlightTrim:
+    """Result of :func:`forward_flight_trim`.
+
+    Attributes
+    ----------
+    target : str
+        One of :data:`TRIM_TARGETS`.
+    mu : float
+        In-plane advance ratio ``V cos(alpha_s) / (Omega R)``, -.
+    params : BladeParameters
+        The blade with the trimmed controls and flight state: ``collective``, ``cyclic_cos``,
+        ``cyclic_sin`` (rad), ``shaft_tilt`` (rad) and ``inflow_ratio`` (the induced inflow).
+    motion : PeriodicMotion
+        The periodic motion of the blade at that trim.
+    thrust : float
+        Rotor thrust ``T``, the mean force along the shaft, N.
+    h_force : float
+        Rotor H-force, the mean in-plane force, positive aft (downstream), N.
+    side_force : float
+        Rotor side force, positive towards the advancing side, N (not balanced).
+    weight : float
+        Helicopter weight, N.
+    drag : float
+        Airframe drag ``0.5 rho V^2 f``, N.
+    flight_speed : float
+        ``V``, m/s.
+    induced_inflow : float
+        Induced inflow ratio ``lambda_i``, -.
+    iterations : int
+        Newton iterations of the trim (0 for ``"none"`` and ``"flapping"``).
+    """
+
+    target: str
+    mu: float
+    params: BladeParameters
+    motion: PeriodicMotion
+    thrust: float
+    h_force: float
+    side_force: float
+    weight: float
+    drag: float
+    flight_speed: float
+    induced_inflow: float
+    iterations: int
+
+    @property
+    def shaft_tilt(self) -> float:
+        """Forward shaft tilt ``alpha_s``, rad."""
+        return self.params.shaft_tilt
+
+    @property
+    def vertical_force(self) -> float:
+        """``T cos(alpha_s) + H sin(alpha_s)``, the rotor force upwards, N."""
+        a = self.params.shaft_tilt
+        return self.thrust * math.cos(a) + self.h_force * math.sin(a)
+
+    @property
+    def propulsive_force(self) -> float:
+        """``T sin(alpha_s) - H cos(alpha_s)``, the rotor force forwards, N."""
+        a = self.params.shaft_tilt
+        return self.thrust * math.sin(a) - self.h_force * math.cos(a)
+
+    @property
+    def lift_over_weight(self) -> float:
+        """Vertical rotor force over the weight, -: 1 for a trimmed helicopter."""
+        return self.vertical_force / self.weight
+
+    @property
+    def thrust_coefficient(self) -> float:
+        """``C_T = T / (rho pi R^2 (Omega R)^2)``, -."""
+        p = self.params
+        return self.thrust / (p.air_density * math.pi * p.radius ** 2 * p.tip_speed ** 2)
+
+    @property
+    def controls_deg(self) -> tuple[float, float, float]:
+        """Collective, ``cyclic_cos`` and ``cyclic_sin``, deg."""
+        p = self.params
+        return (math.degrees(p.collective), math.degrees(p.cyclic_cos), math.degrees(p.cyclic_sin))
+
+
+def rotor_forces(params: BladeParameters, motion: PeriodicMotion) -> tuple[float, float, float]:
+    """Mean rotor force of ``n_blades`` blades on a periodic motion, non-rotating shaft axes.
+
+    The blade's aerodynamic force in the rotating hub frame (radial ``F_r``, in-plane towards
+    the rotation ``F_t``, along the shaft ``F_z``) is turned to the non-rotating axes (x aft,
+    y towards the advancing side, z up the shaft) at each of the motion's collocation azimuths
+    and averaged: ``H = N <F_r cos psi - F_t sin psi>``, ``Y = N <F_r sin psi + F_t cos psi>``,
+    ``T = N <F_z>`` (the mean of a trigonometric polynomial sampled on its collocation grid).
+
+    Parameters
+    ----------
+    params : BladeParameters
+        The blade, with its collective.
+    motion : PeriodicMotion
+        Its periodic motion.
+
+    Returns
+    -------
+    thrust, h_force, side_force : float
+        N (see :class:`ForwardFlightTrim`).
+    """
+    psi = TWO_PI * np.arange(_N_AZIMUTH) / _N_AZIMUTH
+    f = Blade(params, motion.mu).blade_aerodynamic_force(psi, motion.xi(psi))
+    c, s = np.cos(psi), np.sin(psi)
+    n = params.n_blades
+    h = n * float(np.mean(f[:, 0] * c - f[:, 1] * s))
+    y = n * float(np.mean(f[:, 0] * s + f[:, 1] * c))
+    t = n * float(np.mean(f[:, 2]))
+    return t, h, y
+
+
+def _drag(params: BladeParameters, mu: float, tilt: float) -> tuple[float, float]:
+    v = mu * params.tip_speed / math.cos(tilt)
+    return 0.5 * params.air_density * v * v * params.flat_plate_area, v
+
+
+@lru_cache(maxsize=128)
+def forward_flight_trim(params: BladeParameters, mu: float, target: str = "propulsive", *,
+                        tol: float = 1e-9, max_iter: int = 30) -> ForwardFlightTrim:
+    """Trim the blade's rotor at advance ratio ``mu`` for the flight condition ``target``.
+
+    Parameters
+    ----------
+    params : BladeParameters
+        The blade and helicopter (``helicopter_mass``, ``flat_plate_area``). Its
+        ``collective``, ``cyclic_*``, ``shaft_tilt`` and ``inflow_ratio`` are replaced for
+        ``"propulsive"``; for ``"flapping"`` and ``"none"`` they are used as given (a ``None``
+        collective is trimmed in hover, the paper's choice).
+    mu : float
+        In-plane advance ratio, in ``[0, MAX_ADVANCE_RATIO]``; at 0 the helicopter hovers.
+    target : str
+        One of :data:`TRIM_TARGETS`.
+    tol : float
+        Convergence of ``"propulsive"``: the force-balance residuals over the weight and the
+        momentum residual over the hover inflow, all below ``tol``.
+    max_iter : int
+        Largest number of Newton iterations.
+
+    Returns
+    -------
+    ForwardFlightTrim
+
+    Raises
+    ------
+    ValueError
+        Unknown ``target``, bad ``mu``, or a helicopter without weight or air.
+    rotorlyap.errors.TrimError
+        If the trim does not converge (with the residual reached), or no periodic motion is
+        found on the way.
+    """
+    if not isinstance(target, str) or target not in TRIM_TARGETS:
+        raise ValueError(f"target must be one of {TRIM_TARGETS}, got {target!r}")
+    mu = float(mu)
+    if not (math.isfinite(mu) and 0.0 <= mu <= MAX_ADVANCE_RATIO):
+        raise ValueError(f"mu must be an advance ratio in [0, {MAX_ADVANCE_RATIO:g}], got {mu!r}")
+    if params.air_density <= 0.0 or params.weight <= 0.0:
+        raise ValueError("forward_flight_trim needs air (air_density > 0) and a weight (helicopter_mass * "
+                         f"gravity > 0), got air_density = {params.air_density!r}, weight = {params.weight!r} N")
+    base = Blade(params, 0.0).params  # the hover collective filled in if it was None
+    weight = params.weight
+
+    def solve(p: BladeParameters, start=None) -> PeriodicMotion:
+        try:
+            return periodic_motion(p, mu, trim_flapping=(target != "none"), n_points=_N_AZIMUTH,
+                                   start=start)
+        except PeriodicMotionError as exc:
+            raise TrimError(f"forward_flight_trim ({target}, mu = {mu:g}): {exc}") from exc
+
+    if target != "propulsive":
+        if target == "none":
+            base = replace(base, cyclic_cos=0.0, cyclic_sin=0.0)
+        base = replace(base, shaft_tilt=0.0)
+        motion = solve(base)
+        t, h, y = rotor_forces(motion.params, motion)
+        drag, v = _drag(base, mu, 0.0)
+        return ForwardFlightTrim(target=target, mu=mu, params=motion.params, motion=motion, thrust=t,
+                                 h_force=h, side_force=y, weight=weight, drag=drag, flight_speed=v,
+                                 induced_inflow=mean_inflow(base, mu), iterations=0)
+
+    disc = params.air_density * math.pi * params.radius ** 2 * params.tip_speed ** 2  # T = C_T * disc
+    lam_hover = math.sqrt(0.5 * weight / disc)
+    # start: the thrust tilted by the drag, the inflow of momentum theory for it
+    d0, _ = _drag(params, mu, 0.0)
+    tilt0 = math.atan2(d0, weight)
+    lam0 = float(momentum_inflow(math.hypot(weight, d0) / disc, mu, through_flow=mu * math.tan(tilt0)))
+    u = np.array([base.collective, tilt0, lam0])
+    state = {"start": None}
+
+    def evaluate(u: np.ndarray, keep: bool = False):
+        theta0, tilt, lam = float(u[0]), float(u[1]), float(u[2])
+        if not abs(tilt) < math.radians(30.0) or lam <= 0.0 or lam + mu * math.tan(tilt) <= 0.0:
+            raise TrimError(f"forward_flight_trim (mu = {mu:g}): the iteration left the physical range "
+                            f"(shaft tilt {math.degrees(tilt):.3g} deg, induced inflow {lam:.3g}); "
+                            "allowed: tilt in (-30, 30) deg, induced and whole inflow > 0")
+        p = replace(base, collective=theta0, shaft_tilt=tilt, inflow_ratio=lam)
+        motion = solve(p, state["start"])
+        if keep:
+            state["start"] = motion.xi
+        t, h, y = rotor_forces(motion.params, motion)
+        drag, v = _drag(params, mu, tilt)
+        ca, sa = math.cos(tilt), math.sin(tilt)
+        r = np.array([
+            (t * ca + h * sa - weight) / weight,
+            (t * sa - h * ca - drag) / weight,
+            (lam - (t / disc) / (2.0 * math.hypot(mu, mu * math.tan(tilt) + lam))) / lam_hover,
+        ])
+        return r, (motion, t, h, y, drag, v)
+
+    r, out = evaluate(u, keep=True)
+    steps = np.array([1e-6, 1e-6, 1e-7])
+    it = 0
+    while float(np.abs(r).max()) >= tol:
+        if it >= max_iter:
+            raise TrimError(f"forward_flight_trim (propulsive, mu = {mu:g}) did not converge in {max_iter} "
+                            f"Newton iterations: force and momentum residuals {np.abs(r).max():.2g} "
+                            f"(converged means < {tol:.1g})", residual=float(np.abs(r).max()),
+                            tolerance=tol, iterations=it)
+        J = np.empty((3, 3))
+        for k in range(3):
+            du = np.zeros(3)
+            du[k] = steps[k]
+            J[:, k] = (evaluate(u + du)[0] - r) / steps[k]
+        try:
+            delta = np.linalg.solve(J, -r)
+        except np.linalg.LinAlgError as exc:
+            raise TrimError(f"forward_flight_trim (mu = {mu:g}): singular trim Jacobian") from exc
+        lam_step = 1.0
+        while True:  # damped Newton: halve the step until the residual falls
+            try:
+                r_new, out_new = evaluate(u + lam_step * delta, keep=True)
+            except TrimError:
+                r_new = None
+            if r_new is not None and np.abs(r_new).max() < np.abs(r).max():
+                break
+            lam_step *= 0.5
+            if lam_step < 1e-3:
+                raise TrimError(f"forward_flight_trim (mu = {mu:g}): Newton's step does not reduce the "
+                                f"residual {np.abs(r).max():.2g}", residual=float(np.abs(r).max()),
+                                iterations=it)
+        u, r, out = u + lam_step * delta, r_new, out_new
+        it += 1
+    motion, t, h, y, drag, v = out
+    return ForwardFlightTrim(target=target, mu=mu, params=motion.params, motion=motion, thrust=t, h_force=h,
+                             side_force=y, weight=weight, drag=drag, flight_speed=v,
+                             induced_inflow=float(u[2]), iterations=it)
