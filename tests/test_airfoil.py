@@ -162,6 +162,93 @@ def test_linear_airfoil_closed_form():
     assert LinearAirfoil().coefficients(2 * math.pi + 0.1)[0] == pytest.approx(2 * math.pi * 0.1)
 
 
+# ---------------------------------------------------------------- LinearAirfoil in reverse flow
+
+def _plate_force(af, w_y, w_z):
+    """Force (F_y, F_z) per unit qn of the blade's strip formula (rotorlyap.model.aero) on ``af``."""
+    alpha = np.arctan2(w_z, -w_y)
+    cl, cd, _ = af.coefficients(alpha)
+    speed = np.hypot(w_y, w_z)
+    return speed * (cd * w_y + cl * w_z), speed * (cd * w_z - cl * w_y)
+
+
+def test_linear_airfoil_flow_angle_is_the_angle_to_the_chord_line():
+    """alpha' is the angle between the flow and the chord *line*: |alpha'| <= 90 deg and
+    tan(alpha') = tan(alpha) (the same line, whichever edge the flow meets first), on any turn."""
+    a = np.linspace(-3 * math.pi, 3 * math.pi, 20001)
+    a = a[np.abs(np.cos(a)) > 1e-9]  # tan undefined at +-90 deg
+    ap = LinearAirfoil.flow_angle(a)
+    assert np.all(np.abs(ap) <= 0.5 * math.pi)
+    np.testing.assert_allclose(np.tan(ap), np.tan(a), rtol=1e-9, atol=1e-9)
+    # forward flow unchanged; reverse flow measured from the trailing edge
+    assert LinearAirfoil.flow_angle(0.2) == pytest.approx(0.2, abs=1e-15)
+    assert LinearAirfoil.flow_angle(math.pi - 0.2) == pytest.approx(-0.2, abs=1e-12)
+    assert LinearAirfoil.flow_angle(-math.pi + 0.2) == pytest.approx(0.2, abs=1e-12)
+
+
+def test_linear_airfoil_lift_has_period_pi_like_a_symmetric_plate():
+    """A thin symmetric plate looks the same to a flow turned by 180 deg, so cl(alpha + pi) =
+    cl(alpha) (the flat plate's cl = cd_max sin a cos a has period pi too), and cl is odd."""
+    af = LinearAirfoil(lift_slope=5.7, cd0=0.01)
+    a = np.linspace(-0.5 * math.pi + 1e-6, 0.5 * math.pi - 1e-6, 1001)
+    np.testing.assert_allclose(cl_of(af, a + math.pi), cl_of(af, a), rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(cl_of(af, a - math.pi), cl_of(af, a), rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(cl_of(af, -a), -cl_of(af, a), rtol=1e-12, atol=1e-15)
+    # so the reverse-flow lift is bounded by the forward one, not a pi (the wrapped-angle error)
+    full = np.linspace(-math.pi, math.pi, 10001)
+    assert np.max(np.abs(cl_of(af, full))) <= 5.7 * 0.5 * math.pi * (1 + 1e-12)
+
+
+@pytest.mark.parametrize("eps", [0.02, 0.1])
+def test_linear_airfoil_air_from_below_pushes_a_plate_up_whichever_edge_leads(eps):
+    """Air coming from below at a small angle eps pushes a flat plate upwards (F_z > 0) with the
+    leading edge first (w_y < 0) and with the trailing edge first (w_y > 0), with the same thin-
+    airfoil force a eps V^2 (small angle); air from above pushes it down. Blade formula:
+    alpha = atan2(w_z, -w_y), F_z = qn (cd w_z - cl w_y)."""
+    af = LinearAirfoil(lift_slope=2 * math.pi, cd0=0.0)
+    V = 3.0
+    for sign in (+1.0, -1.0):  # air from below (+) or from above (-)
+        w_z = sign * V * math.sin(eps)
+        for w_y in (-V * math.cos(eps), V * math.cos(eps)):  # forward, reverse flow
+            _, Fz = _plate_force(af, w_y, w_z)
+            assert np.sign(Fz) == sign
+            assert float(Fz) == pytest.approx(sign * 2 * math.pi * eps * V * V * math.cos(eps), rel=1e-12)
+
+
+def test_linear_airfoil_symmetric_full_range_airfoil_agrees_in_both_linear_ranges():
+    """LinearAirfoil is the thin-airfoil limit of the full-range Airfoil's treatment of reverse
+    flow: for a symmetric section (zero camber, equal reverse slope) both give the same cl on
+    the attached part of either edge's lift curve."""
+    a = 2 * math.pi
+    sym = Airfoil(lift_slope=a, alpha_zero_lift=0.0, cl_max=1.5, alpha_stall=16 * DEG, cl_min=-1.5,
+                  alpha_stall_negative=-16 * DEG, cd_min=0.006, cl_cd_min=0.0, drag_rise=0.01, cm_ac=0.0,
+                  aerodynamic_centre=0.25, reverse_lift_slope=a, reverse_stall_angle=8 * DEG, table_size=0)
+    lin = LinearAirfoil(lift_slope=a)
+    fwd = np.linspace(-10 * DEG, 10 * DEG, 41)  # below the rounding into stall (11.4 deg)
+    rev = np.linspace(-3.9 * DEG, 3.9 * DEG, 41)  # reverse branch linear over half its 8 deg stall range
+    for al in (fwd, math.pi + rev[rev < 0], -math.pi + rev[rev > 0]):
+        np.testing.assert_allclose(cl_of(lin, al), cl_of(sym, al), rtol=1e-12, atol=1e-12)
+
+
+def test_linear_airfoil_cl_jumps_at_90_deg_but_the_normal_force_is_continuous():
+    """At |alpha| = 90 deg the flow meets the section broadside: cl jumps between +-a pi/2, but the
+    chordwise speed w_y is zero there, so F_z = qn (cd w_z - cl w_y) is continuous (-> cd0 V^2)
+    while F_y = qn (cd w_y + cl w_z) jumps by 2 (a pi/2) V^2."""
+    a, cd0, V = 5.7, 0.02, 2.0
+    af = LinearAirfoil(lift_slope=a, cd0=cd0)
+    for side in (+1.0, -1.0):  # alpha = +90 deg (air from below), -90 deg (air from above)
+        d = 1e-7
+        before = side * (0.5 * math.pi - d)  # forward flow
+        after = side * (0.5 * math.pi + d)  # reverse flow
+        assert float(cl_of(af, before)) == pytest.approx(side * a * 0.5 * math.pi, rel=1e-6)
+        assert float(cl_of(af, after)) == pytest.approx(-side * a * 0.5 * math.pi, rel=1e-6)
+        Fy0, Fz0 = _plate_force(af, -V * math.cos(before), V * math.sin(before))
+        Fy1, Fz1 = _plate_force(af, -V * math.cos(after), V * math.sin(after))
+        assert float(Fz1 - Fz0) == pytest.approx(0.0, abs=1e-5)
+        assert float(Fz0) == pytest.approx(side * cd0 * V * V, abs=1e-5)
+        assert float(Fy0 - Fy1) == pytest.approx(2 * a * 0.5 * math.pi * V * V, rel=1e-6)
+
+
 def test_wrap_angle_range():
     a = wrap_angle(np.array([-math.pi, math.pi, 3 * math.pi / 2, -7.0]))
     assert np.all((a >= -math.pi) & (a < math.pi))

@@ -17,6 +17,12 @@ The pitch-damping couple of quasi-steady thin-airfoil theory,
 ``0.5 rho U^2 c^2 cm_q (q c / 2U) = (rho c^3 cm_q / 4) U q``, acts about ``x_B`` with ``q`` the
 pitch rate of the section relative to the hub frame (``BladeParameters.cm_pitch_rate``).
 
+With ``params.compressibility = "prandtl-glauert"`` the section coefficients are corrected by
+the section Mach number ``|w| / params.speed_of_sound`` (forward-flow lift times the
+Prandtl-Glauert factor, capped at M = 0.8; Lock's drag rise above Korn's critical Mach
+number): :mod:`rotorlyap.model.compressibility`. With ``"none"`` (default) the loads are the
+incompressible ones, bit for bit.
+
 The induced inflow ``lambda_i(r, psi) = a(r) + b(r) cos psi`` comes from
 :func:`rotorlyap.model.inflow.induced_inflow`, sampled once at construction (its form is checked).
 
@@ -32,6 +38,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
+from .compressibility import CompressibilityConstants, apply_to_coefficients, compressibility_constants
 from .inflow import induced_inflow
 from .mass import pretwist
 from .parameters import BladeParameters
@@ -65,6 +72,8 @@ class StripAerodynamics:
         Quadrature weights of the stations, m.
     active : bool
         False in vacuum (``air_density = 0``): no loads at all.
+    compressibility : rotorlyap.model.compressibility.CompressibilityConstants
+        The compressibility model's numbers (``compressibility.enabled`` False: none).
     """
 
     def __init__(self, params: BladeParameters, mu: float):
@@ -96,6 +105,7 @@ class StripAerodynamics:
         self._dn = _column(0.25 * p.air_density * p.cm_pitch_rate * c ** 3 * self.weights)
         self._pitch_damped = p.cm_pitch_rate != 0.0
         self.active = p.air_density > 0.0
+        self.compressibility: CompressibilityConstants = compressibility_constants(p)
         # Induced inflow lambda_i(r, psi) = a(r) + b(r) cos psi (Glauert form, checked).
         VR = p.rotor_speed * p.radius
         lam_90 = np.asarray(induced_inflow(p, mu, ro, 0.5 * math.pi), dtype=np.float64)
@@ -174,6 +184,8 @@ class StripAerodynamics:
         if self.params.twist != 0.0:
             alpha = alpha + self._phi
         cl, cd, cm = self.params.airfoil.coefficients(alpha)
+        if self.compressibility.enabled:
+            cl, cd = apply_to_coefficients(alpha, Vm, cl, cd, self.compressibility)
         qn = self._qn * Vm
         Fy = qn * (cd * u_y + cl * u_z)
         Fz = qn * (cd * u_z - cl * u_y)

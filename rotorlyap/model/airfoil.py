@@ -437,16 +437,59 @@ class Airfoil:
 
 @dataclass(frozen=True)
 class LinearAirfoil:
-    """Thin-airfoil linear section: ``cl = a alpha``, ``cd = cd0``, ``cm = 0``.
+    """Thin-airfoil linear section, either edge leading: ``cl = a alpha'``, ``cd = cd0``, ``cm = 0``.
 
-    For closed-form checks (e.g. the hover coning angle of blade-element
-    theory).  ``alpha`` is wrapped to [-pi, pi) like :class:`Airfoil`, so the
-    model is only meaningful for small angles.
+    For closed-form checks against classical blade-element theory (e.g. the
+    hover coning angle, or the flap stability of a rotor at high advance
+    ratio).  ``alpha`` is wrapped to [-pi, pi) like :class:`Airfoil`, and
+    ``alpha'`` is the angle between the relative wind and the chord line,
+    measured from whichever edge the air meets first:
+
+    * forward flow, ``|alpha| <= pi/2``: ``alpha' = alpha``;
+    * reverse flow, ``|alpha| > pi/2`` (the air meets the trailing edge first):
+      ``alpha' = alpha - copysign(pi, alpha)``, i.e. ``alpha - pi`` for
+      ``alpha > pi/2`` and ``alpha + pi`` for ``alpha < -pi/2``,
+
+    so ``alpha'`` lies in [-pi/2, pi/2] and ``cl = a alpha'`` is the lift of a
+    thin plate with the other edge leading, exactly as :class:`Airfoil` treats
+    reverse flow with its reverse branch (lift slope ``a`` for either edge
+    leading, as thin-airfoil theory gives for a symmetric plate).  This is the
+    classical linear treatment of reverse flow in blade-element theory at high
+    advance ratio: to first order in the perpendicular velocity ``u_P`` the
+    section lift is ``(rho a c / 2) (u_T |u_T| theta - u_P |u_T|)`` with the
+    signed tangential velocity ``u_T`` (negative in reverse flow), the form of
+    the classical flap-stability analyses [Sissingh1968], [PetersHohenemser1971]
+    (see also [Johnson1980]); ``tests/test_high_mu.py`` checks the blade built
+    on it against that equation.
+
+    Direction of the force (the blade's convention, :mod:`rotorlyap.model.aero`):
+    ``alpha = atan2(w_z, -w_y)`` with ``(w_y, w_z)`` the in-plane air velocity
+    relative to the section, and ``F_y = qn (cd w_y + cl w_z)``, ``F_z = qn
+    (cd w_z - cl w_y)`` with ``qn > 0``.  A flat plate (``cd0 = 0``) with the
+    air coming from below at a small angle ``eps`` (``w_z = V sin eps``,
+    ``eps > 0``):
+
+    * forward flow, ``w_y = -V cos eps``: ``alpha = eps``, ``cl = a eps``,
+      ``F_z = qn a eps V cos eps > 0``;
+    * reverse flow, ``w_y = +V cos eps``: ``alpha = pi - eps``,
+      ``alpha' = -eps``, ``cl = -a eps``, ``F_z = qn a eps V cos eps > 0``;
+
+    upwards in both, as for a plate pushed up by an up-going air stream
+    whichever edge leads.  (Wrapping alone, ``cl = a alpha``, would give
+    ``cl ~ a pi`` and a large downward force in reverse flow.)
+
+    ``cl`` jumps from ``a pi/2`` to ``-a pi/2`` (and back) at ``|alpha| =
+    pi/2``, where the flow meets the section broadside.  There the in-plane
+    speed along the chord ``w_y`` is zero, so ``F_z`` (the ``cl`` term is
+    ``-cl w_y``) stays continuous; ``F_y`` (``cl w_z``) jumps sign.  The linear
+    model is meant for small ``|alpha'|``; near 90 deg it is as unphysical as
+    any linear lift curve, only the weighting by ``w_y`` makes the jump
+    harmless for ``F_z``.
 
     Parameters
     ----------
     lift_slope : float
-        Lift-curve slope ``a``, 1/rad (thin-airfoil theory: 2 pi).
+        Lift-curve slope ``a``, 1/rad (thin-airfoil theory: 2 pi), either edge leading.
     cd0 : float
         Constant profile drag coefficient, -, >= 0.
     name : str
@@ -467,15 +510,34 @@ class LinearAirfoil:
         if not isinstance(self.name, str):
             raise TypeError(f"name must be a str, got {self.name!r}")
 
+    @staticmethod
+    def flow_angle(alpha: ArrayLike) -> NDArray[np.float64]:
+        """Angle ``alpha'`` between the relative wind and the chord line, from the leading edge of the flow.
+
+        Parameters
+        ----------
+        alpha : array_like
+            Angle of attack, rad, any shape; wrapped to [-pi, pi).
+
+        Returns
+        -------
+        ndarray
+            ``alpha`` for ``|alpha| <= pi/2`` (forward flow), ``alpha - copysign(pi, alpha)``
+            beyond (reverse flow); in [-pi/2, pi/2], rad, same shape as ``alpha``.
+        """
+        al = wrap_angle(alpha)
+        return np.where(np.abs(al) <= 0.5 * math.pi, al, al - np.copysign(math.pi, al))
+
     def coefficients(self, alpha: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
         """Linear coefficients at ``alpha`` (rad, any shape, wrapped to [-pi, pi)).
 
         Returns
         -------
         cl, cd, cm : ndarray
-            ``a alpha``, ``cd0`` and 0, same shape as ``alpha``.
+            ``a alpha'`` (``alpha'`` from :meth:`flow_angle`: ``alpha`` in forward flow,
+            ``alpha -+ pi`` in reverse flow), ``cd0`` and 0, same shape as ``alpha``.
         """
-        al = wrap_angle(alpha)
+        al = self.flow_angle(alpha)
         return self.lift_slope * al, np.full_like(al, self.cd0), np.zeros_like(al)
 
 

@@ -35,6 +35,7 @@ from numpy.typing import NDArray
 from ..jit import PARALLEL_MIN_STATES, jit_parallel, prange, threads, use_compiled
 from ..jit import jit as _jit
 from ._generated import blade_scalar as _scalar
+from .compressibility import WAVE_DRAG_FACTOR
 
 __all__ = ["KernelData", "kernel_data", "rhs", "potential_terms", "energy_rate"]
 
@@ -52,7 +53,9 @@ is imported by that one, so it does not import it back)."""
 _RX, _WY, _WZ, _RY, _RZ, _PHI, _QN, _MN, _DN, _IA, _IB = range(11)
 # entries of the scalar array
 (_OMEGA, _C0, _C1, _C2, _MUVR, _ACTIVE, _PITCH_DAMPED, _TWISTED, _UNIFORM,
- _TABLE_N, _CYCLIC) = range(11)
+ _TABLE_N, _CYCLIC, _COMPRESSIBLE, _INV_A, _MACH_CAP, _MCRIT0) = range(15)
+# Lock's drag-rise coefficient (rotorlyap.model.compressibility.WAVE_DRAG_FACTOR)
+_WAVE = WAVE_DRAG_FACTOR
 
 
 class KernelData:
@@ -62,10 +65,12 @@ class KernelData:
     ----------
     P : numpy.ndarray, shape (20,)
         Parameters of the generated code (``PARAMETER_NAMES`` order).
-    scalars : numpy.ndarray, shape (11,)
+    scalars : numpy.ndarray, shape (15,)
         Rotor speed (rad/s), hinge damping x rotor speed (3, N m s/rad x rad/s), ``mu Omega R``
         (m/s) and flags (aerodynamics on, pitch damping on, twist, inflow uniform in psi,
-        table size, cyclic pitch).
+        table size, cyclic pitch); then the compressibility model
+        (:mod:`rotorlyap.model.compressibility`): on (1) or off (0), ``1 / speed_of_sound``
+        (s/m), the cap of the Prandtl-Glauert factor and the zero-lift critical Mach number.
     stations : numpy.ndarray, shape (11, n_stations)
         Per station: lever arms of the wind point and of the aerodynamic centre (m), pretwist
         (rad), load factors and the inflow coefficients (m/s).
@@ -78,12 +83,14 @@ class KernelData:
     def __init__(self, eq: BladeEquations, table: FloatArray):
         p = eq.params
         stations, free_stream, pitch_damped, uniform = eq.aero.kernel_inputs()
+        comp = eq.aero.compressibility
         self.P = np.asarray(eq.parameter_values, dtype=np.float64)
         damp = np.array([p.flap_damping, p.lag_damping, p.pitch_damping]) * eq.omega
         self.scalars = np.array([
             eq.omega, damp[0], damp[1], damp[2], free_stream, float(eq.aero.active),
             float(pitch_damped), float(p.twist != 0.0), float(uniform), float(table.shape[0]),
-            float(eq.has_cyclic)])
+            float(eq.has_cyclic), float(comp.enabled), comp.inverse_speed_of_sound,
+            comp.mach_cap, comp.critical_mach_zero_lift])
         self.stations = stations
         self.table = table
 
@@ -137,6 +144,10 @@ def _accelerations(psi, z3, z4, z5, T, sc, st, tab, acc):
         uniform = sc[_UNIFORM] != 0.0
         twisted = sc[_TWISTED] != 0.0
         damped = sc[_PITCH_DAMPED] != 0.0
+        compressible = sc[_COMPRESSIBLE] != 0.0
+        inv_a = sc[_INV_A]
+        mach_cap = sc[_MACH_CAP]
+        mcrit0 = sc[_MCRIT0]
         n_tab = int(sc[_TABLE_N])
         two_pi = 2.0 * math.pi
         fac = n_tab / two_pi
@@ -174,6 +185,7 @@ def _accelerations(psi, z3, z4, z5, T, sc, st, tab, acc):
                 u = u - two_pi if u < 2.0 * two_pi else u % two_pi
             elif u < 0.0:
                 u = u + two_pi if u >= -two_pi else u % two_pi
+            u0 = u
             u = u * fac
             i = int(u)
             if i > n_tab - 1:
@@ -182,6 +194,15 @@ def _accelerations(psi, z3, z4, z5, T, sc, st, tab, acc):
             cl = tab[i, 0] + u * tab[i, 1]
             cd = tab[i, 2] + u * tab[i, 3]
             cm = tab[i, 4] + u * tab[i, 5]
+            if compressible:
+                # compressibility.apply_to_coefficients, the same operations in the same order
+                mach = Vm * inv_a
+                me = mach if mach < mach_cap else mach_cap
+                if u0 >= 0.5 * math.pi and u0 <= 1.5 * math.pi:  # forward flow
+                    cl = cl * (1.0 / math.sqrt(1.0 - me * me))
+                dm = mach - (mcrit0 - 0.1 * abs(cl))
+                if dm > 0.0:
+                    cd = cd + _WAVE * (dm * dm) * (dm * dm)
             qn = st[_QN, k] * Vm
             Fy = qn * (cd * u_y + cl * u_z)
             Fz = qn * (cd * u_z - cl * u_y)

@@ -24,10 +24,10 @@ of the blade model). The induced inflow is Glauert's momentum value for the thru
 actually produces and the whole flow through the disc, ``lambda_i = C_T / (2 sqrt(mu^2 + (mu
 tan(alpha_s) + lambda_i)^2))``. The cyclic pitch makes the first harmonics of flapping zero (the
 tip-path plane stays perpendicular to the shaft; with the small hinge offset of Table I, about
-1 % of the radius, the hub moment is then small too). The collective, the shaft tilt and the
-inflow are solved together by Newton's method with a finite-difference Jacobian; at each
-evaluation the periodic motion and its cyclic pitch come from
-:func:`rotorlyap.model.steady.periodic_motion`.
+1 % of the radius, the hub moment is then small too). The periodic motion (Fourier collocation,
+as :func:`rotorlyap.model.steady.periodic_motion`), the collective, the cyclic, the shaft tilt
+and the inflow are solved together by one Newton iteration from the trimmed hover state;
+where it does not converge, by continuation in ``mu`` from hover.
 
 Simplifications, stated: no fuselage pitching moment or download, no tail rotor, the lateral
 (side) force is reported but not balanced (a small roll of the helicopter would), and the blade's
@@ -60,7 +60,7 @@ from ..errors import PeriodicMotionError, TrimError
 from .blade import Blade
 from .inflow import mean_inflow, momentum_inflow
 from .parameters import BladeParameters
-from .steady import PeriodicMotion, periodic_motion
+from .steady import PeriodicMotion, _differentiation_matrix, _first_harmonics, periodic_motion
 
 __all__ = ["TRIM_TARGETS", "ForwardFlightTrim", "forward_flight_trim", "rotor_forces"]
 
@@ -250,69 +250,148 @@ def forward_flight_trim(params: BladeParameters, mu: float, target: str = "propu
                                  h_force=h, side_force=y, weight=weight, drag=drag, flight_speed=v,
                                  induced_inflow=mean_inflow(base, mu), iterations=0)
 
+    # Newton from the drag-tilted hover state; where it does not converge (a heavily coupled
+    # blade far from hover), continuation in mu from hover in steps of at most 0.05
+    try:
+        return _propulsive(params, base, mu, None, tol, max_iter)
+    except TrimError as first:
+        n = max(2, int(math.ceil(mu / 0.05)))
+        guess = None
+        try:
+            for m in np.linspace(0.0, mu, n + 1)[1:]:
+                tr = _propulsive(params, base, float(m), guess, tol, max_iter)
+                p_ = tr.params
+                guess = (np.array([p_.collective, p_.cyclic_cos, p_.cyclic_sin, p_.shaft_tilt, tr.induced_inflow]),
+                         tr.motion.xi(TWO_PI * np.arange(_N_AZIMUTH) / _N_AZIMUTH))
+        except TrimError as exc:
+            raise TrimError(f"{first}; continuation in mu from hover failed too: {exc}") from exc
+        return tr
+
+
+def _propulsive(params: BladeParameters, base: BladeParameters, mu: float, guess, tol: float,
+                max_iter: int) -> ForwardFlightTrim:
+    """Newton's method on the whole trim at one ``mu``; ``guess`` = (controls, states) or None.
+
+    One system holds the collocation equations of the periodic motion (the states at
+    ``_N_AZIMUTH`` azimuths, as in :func:`rotorlyap.model.steady.periodic_motion`), the two
+    first flapping harmonics, the two force balances and the momentum equation; the unknowns
+    are the states and ``c = (collective, cyclic_cos, cyclic_sin, shaft_tilt, lambda_i)``. The
+    Jacobian is exact in the states (the blade's Jacobian) and by finite differences in ``c``;
+    the force rows' dependence on the states is differenced one state component at a time over
+    all azimuths at once (each azimuth's force depends on its own state only).
+    """
+    weight = params.weight
+    n = _N_AZIMUTH
+    psi = TWO_PI * np.arange(n) / n
+    D = _differentiation_matrix(n)
+    cos_w, sin_w = 2.0 * np.cos(psi) / n, 2.0 * np.sin(psi) / n
+    cp, sp = np.cos(psi), np.sin(psi)
+    N = params.n_blades
     disc = params.air_density * math.pi * params.radius ** 2 * params.tip_speed ** 2  # T = C_T * disc
     lam_hover = math.sqrt(0.5 * weight / disc)
-    # start: the thrust tilted by the drag, the inflow of momentum theory for it
-    d0, _ = _drag(params, mu, 0.0)
-    tilt0 = math.atan2(d0, weight)
-    lam0 = float(momentum_inflow(math.hypot(weight, d0) / disc, mu, through_flow=mu * math.tan(tilt0)))
-    u = np.array([base.collective, tilt0, lam0])
-    state = {"start": None}
 
-    def evaluate(u: np.ndarray, keep: bool = False):
-        theta0, tilt, lam = float(u[0]), float(u[1]), float(u[2])
+    if guess is None:
+        d0, _ = _drag(params, mu, 0.0)
+        tilt0 = math.atan2(d0, weight)
+        lam0 = float(momentum_inflow(math.hypot(weight, d0) / disc, mu, through_flow=mu * math.tan(tilt0)))
+        c = np.array([base.collective, 0.0, 0.0, tilt0, lam0])
+        Z = np.tile(Blade(params, 0.0).equilibrium(), (n, 1))  # the trimmed hover state
+    else:
+        c, Z = np.array(guess[0], dtype=float), np.array(guess[1], dtype=float)
+
+    def blade_for(c: np.ndarray) -> Blade:
+        theta0, c1, s1, tilt, lam = (float(v) for v in c)
         if not abs(tilt) < math.radians(30.0) or lam <= 0.0 or lam + mu * math.tan(tilt) <= 0.0:
             raise TrimError(f"forward_flight_trim (mu = {mu:g}): the iteration left the physical range "
                             f"(shaft tilt {math.degrees(tilt):.3g} deg, induced inflow {lam:.3g}); "
                             "allowed: tilt in (-30, 30) deg, induced and whole inflow > 0")
-        p = replace(base, collective=theta0, shaft_tilt=tilt, inflow_ratio=lam)
-        motion = solve(p, state["start"])
-        if keep:
-            state["start"] = motion.xi
-        t, h, y = rotor_forces(motion.params, motion)
-        drag, v = _drag(params, mu, tilt)
-        ca, sa = math.cos(tilt), math.sin(tilt)
-        r = np.array([
-            (t * ca + h * sa - weight) / weight,
-            (t * sa - h * ca - drag) / weight,
-            (lam - (t / disc) / (2.0 * math.hypot(mu, mu * math.tan(tilt) + lam))) / lam_hover,
-        ])
-        return r, (motion, t, h, y, drag, v)
+        return Blade(replace(base, collective=theta0, cyclic_cos=c1, cyclic_sin=s1, shaft_tilt=tilt,
+                             inflow_ratio=lam), mu)
 
-    r, out = evaluate(u, keep=True)
-    steps = np.array([1e-6, 1e-6, 1e-7])
+    def forces(blade: Blade, Z: np.ndarray) -> np.ndarray:
+        f = blade.blade_aerodynamic_force(psi, Z)
+        return np.array([N * np.mean(f[:, 2]), N * np.mean(f[:, 0] * cp - f[:, 1] * sp)])  # T, H
+
+    def residual(c: np.ndarray, Z: np.ndarray, blade: Blade | None = None):
+        blade = blade_for(c) if blade is None else blade
+        t, h = forces(blade, Z)
+        tilt, lam = float(c[3]), float(c[4])
+        drag, _ = _drag(params, mu, tilt)
+        ca, sa = math.cos(tilt), math.sin(tilt)
+        r = np.concatenate([
+            (D @ Z - blade.rhs(psi, Z)).reshape(-1),
+            [cos_w @ Z[:, 0], sin_w @ Z[:, 0]],
+            [(t * ca + h * sa - weight) / weight,
+             (t * sa - h * ca - drag) / weight,
+             (lam - (t / disc) / (2.0 * math.hypot(mu, mu * math.tan(tilt) + lam))) / lam_hover],
+        ])
+        return r, blade
+
+    r, blade = residual(c, Z)
+    err = float(np.abs(r).max())
+    m = 6 * n
+    steps_c = np.array([1e-6, 1e-6, 1e-6, 1e-6, 1e-7])
     it = 0
-    while float(np.abs(r).max()) >= tol:
+    while not err < tol:
         if it >= max_iter:
             raise TrimError(f"forward_flight_trim (propulsive, mu = {mu:g}) did not converge in {max_iter} "
-                            f"Newton iterations: force and momentum residuals {np.abs(r).max():.2g} "
-                            f"(converged means < {tol:.1g})", residual=float(np.abs(r).max()),
-                            tolerance=tol, iterations=it)
-        J = np.empty((3, 3))
-        for k in range(3):
-            du = np.zeros(3)
-            du[k] = steps[k]
-            J[:, k] = (evaluate(u + du)[0] - r) / steps[k]
+                            f"Newton iterations: residual {err:.2g} (converged means < {tol:.1g})",
+                            residual=err, tolerance=tol, iterations=it)
+        J = np.zeros((m + 5, m + 5))
+        J[:m, :m] = np.kron(D, np.eye(6))
+        jac = blade.jacobian(psi, Z)
+        for j in range(n):
+            J[6 * j:6 * j + 6, 6 * j:6 * j + 6] -= jac[j]
+        J[m, 0:m:6] = cos_w
+        J[m + 1, 0:m:6] = sin_w
+        # force and momentum rows against the states: one component at a time, all azimuths
+        h_z = 1e-7
+        tilt, lam = float(c[3]), float(c[4])
+        ca, sa = math.cos(tilt), math.sin(tilt)
+        g = 1.0 / (2.0 * math.hypot(mu, mu * math.tan(tilt) + lam) * disc * lam_hover)
+        f0 = blade.blade_aerodynamic_force(psi, Z)
+        for k in range(6):
+            Zp = Z.copy()
+            Zp[:, k] += h_z
+            fp = blade.blade_aerodynamic_force(psi, Zp)
+            dT = N * (fp[:, 2] - f0[:, 2]) / (n * h_z)
+            dH = N * ((fp[:, 0] - f0[:, 0]) * cp - (fp[:, 1] - f0[:, 1]) * sp) / (n * h_z)
+            J[m + 2, k:m:6] = (dT * ca + dH * sa) / weight
+            J[m + 3, k:m:6] = (dT * sa - dH * ca) / weight
+            J[m + 4, k:m:6] = -dT * g
+        for k in range(5):
+            dc = c.copy()
+            dc[k] += steps_c[k]
+            J[:, m + k] = (residual(dc, Z)[0] - r) / steps_c[k]
         try:
-            delta = np.linalg.solve(J, -r)
+            step = np.linalg.solve(J, -r)
         except np.linalg.LinAlgError as exc:
             raise TrimError(f"forward_flight_trim (mu = {mu:g}): singular trim Jacobian") from exc
-        lam_step = 1.0
+        a = 1.0
         while True:  # damped Newton: halve the step until the residual falls
+            Z_new = Z + a * step[:m].reshape(n, 6)
+            c_new = c + a * step[m:]
             try:
-                r_new, out_new = evaluate(u + lam_step * delta, keep=True)
+                r_new, blade_new = residual(c_new, Z_new)
+                err_new = float(np.abs(r_new).max())
             except TrimError:
-                r_new = None
-            if r_new is not None and np.abs(r_new).max() < np.abs(r).max():
+                err_new = np.inf
+            if err_new < err:
                 break
-            lam_step *= 0.5
-            if lam_step < 1e-3:
+            a *= 0.5
+            if a < 1e-3:
                 raise TrimError(f"forward_flight_trim (mu = {mu:g}): Newton's step does not reduce the "
-                                f"residual {np.abs(r).max():.2g}", residual=float(np.abs(r).max()),
-                                iterations=it)
-        u, r, out = u + lam_step * delta, r_new, out_new
+                                f"residual {err:.2g}", residual=err, iterations=it)
+        Z, c, r, blade, err = Z_new, c_new, r_new, blade_new, err_new
         it += 1
-    motion, t, h, y, drag, v = out
-    return ForwardFlightTrim(target=target, mu=mu, params=motion.params, motion=motion, thrust=t, h_force=h,
-                             side_force=y, weight=weight, drag=drag, flight_speed=v,
-                             induced_inflow=float(u[2]), iterations=it)
+    coeffs = np.fft.rfft(Z, axis=0) / n
+    coeffs[-1] *= 0.5  # the Nyquist term is shared between +-n/2
+    motion = PeriodicMotion(params=blade.params, mu=mu, z0=Z[0].copy(), coefficients=coeffs,
+                            residual=float(np.abs(r[:m]).max()),
+                            fourier_error=float(np.abs(coeffs[-4:]).max() * 2.0),
+                            harmonics_deg=np.degrees(_first_harmonics(Z[:, :3]).T))
+    t, h, y = rotor_forces(blade.params, motion)
+    drag, v = _drag(params, mu, float(c[3]))
+    return ForwardFlightTrim(target="propulsive", mu=mu, params=blade.params, motion=motion, thrust=t,
+                             h_force=h, side_force=y, weight=weight, drag=drag, flight_speed=v,
+                             induced_inflow=float(c[4]), iterations=it)
