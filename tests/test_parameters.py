@@ -42,8 +42,17 @@ def test_table_i_three_cg_positions_are_0p02c_about_the_aerodynamic_centre(cg, x
     assert CG_POSITIONS[cg] == x
 
 
-def test_default_construction_is_the_forward_cg_case(forward):
-    assert BladeParameters() == forward
+def test_default_construction_is_the_forward_cg_case_with_a_skew_dependent_inflow(forward):
+    """The defaults are the Table I blade, forward C.G.; only the inflow differs: the paper's
+    Glauert in table_i(), Pitt-Peters (k_x = 0 in hover, growing with the wake skew) by default."""
+    assert BladeParameters() == dataclasses.replace(forward, inflow_model="pitt-peters")
+    assert forward.inflow_model == "glauert"
+
+
+def test_flight_case_is_table_i_with_the_reports_forward_flight_models():
+    q = BladeParameters.flight_case("backward")
+    assert (q.inflow_model, q.compressibility) == ("pitt-peters", "prandtl-glauert")
+    assert dataclasses.replace(q, inflow_model="glauert", compressibility="none") == BladeParameters.table_i("backward")
 
 
 def test_table_i_unknown_cg_name_is_rejected_listing_allowed_names():

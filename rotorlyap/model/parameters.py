@@ -112,7 +112,8 @@ FIELD_INFO: dict[str, tuple[str, str]] = {
     "air_density": ("kg/m^3", "assumed: ISA sea level"),
     "gravity": ("m/s^2", "assumed: standard gravity"),
     "airfoil": ("-", "assumed: NACA 23012 (Table I a.c. at 0.235 c suggests a 230-series section)"),
-    "inflow_model": ("-", "paper: Glauert's induced velocity (k_x = 1.2 assumed)"),
+    "inflow_model": ("-", "paper: Glauert's induced velocity (k_x = 1.2 assumed), table_i(); default: Pitt-Peters "
+                          "(k_x grows with the wake skew, 0 in hover)"),
     "inflow_ratio": ("-", "assumed: None = momentum theory with thrust = weight"),
     "collective": ("rad", "assumed: None = trimmed so that hover thrust = weight"),
     "cyclic_cos": ("rad", "assumed: no cyclic pitch"),
@@ -262,7 +263,9 @@ class BladeParameters:
         ``coefficients(alpha) -> (cl, cd, cm)`` method.  Assumed: NACA 23012
         (:data:`TABLE_I_AIRFOIL`, moment about the Table I a.c.).
     inflow_model : str
-        One of :data:`INFLOW_MODELS`.  Paper: Glauert ("glauert", k_x = 1.2).
+        One of :data:`INFLOW_MODELS`.  Default: "pitt-peters", whose gradient ``k_x = 15 pi/32
+        tan(chi/2)`` grows smoothly with the wake skew from 0 in hover; :meth:`table_i` uses the
+        paper's Glauert ("glauert", a constant k_x = 1.2 switched on by any forward speed).
     inflow_ratio : float or None
         Mean induced inflow ratio lambda_0 = v_i / (Omega R), >= 0; None: from
         momentum theory with thrust = weight (:mod:`rotorlyap.model.inflow`).
@@ -320,7 +323,7 @@ class BladeParameters:
     air_density: float = 1.225
     gravity: float = 9.80665
     airfoil: Any = field(default=TABLE_I_AIRFOIL)
-    inflow_model: str = "glauert"
+    inflow_model: str = "pitt-peters"
     inflow_ratio: float | None = None
     collective: float | None = None
     cyclic_cos: float = 0.0
@@ -432,7 +435,8 @@ class BladeParameters:
     # ------------------------------------------------------------------ cases
     @classmethod
     def table_i(cls, cg: str = "forward", **overrides: Any) -> "BladeParameters":
-        """The paper's blade (Table I) with one of its three C.G. positions.
+        """The paper's blade (Table I) with one of its three C.G. positions, and the paper's
+        Glauert inflow (``inflow_model="glauert"`` unless overridden).
 
         Parameters
         ----------
@@ -453,7 +457,29 @@ class BladeParameters:
         """
         if not isinstance(cg, str) or cg not in CG_POSITIONS:
             raise ValueError(f"cg must be one of {tuple(CG_POSITIONS)}, got {cg!r}")
+        overrides.setdefault("inflow_model", "glauert")  # the paper's inflow
         return cls(cg_position=CG_POSITIONS[cg], **overrides)
+
+    @classmethod
+    def flight_case(cls, cg: str = "forward", **overrides: Any) -> "BladeParameters":
+        """The Table I blade in the report's forward-flight model: the paper's blade and
+        helicopter (:meth:`table_i`) with a skew-dependent inflow ("pitt-peters") and compressible
+        sections ("prandtl-glauert"), for :func:`rotorlyap.model.forward_trim.forward_flight_trim`.
+
+        Parameters
+        ----------
+        cg : {"forward", "neutral", "backward"}
+            As in :meth:`table_i`.
+        **overrides
+            Further field values.
+
+        Returns
+        -------
+        BladeParameters
+        """
+        overrides.setdefault("inflow_model", "pitt-peters")
+        overrides.setdefault("compressibility", "prandtl-glauert")
+        return cls.table_i(cg, **overrides)
 
     # ------------------------------------------------------------------ geometry
     @property
