@@ -314,3 +314,22 @@ def test_validity_map_accepts_tables_and_callables_and_falls_back_for_other_airf
         comp.validity_map(blade, np.zeros(5), psi=psi)
     with pytest.raises(ValueError, match="stall_angles must be"):
         comp.validity_map(blade, xi, psi=psi, stall_angles=(0.1, 0.2))
+
+
+def test_the_prandtl_glauert_factor_scales_lift_moment_and_pitch_damping_alike():
+    """Linearised subsonic flow scales every pressure coefficient of a section by 1/beta: the
+    corrected lift and moment, and the factor the strip loads apply to the pitch-damping couple,
+    are all 1/sqrt(1 - M^2) in forward flow and 1 in reverse flow (where nothing is corrected)."""
+    from rotorlyap.model.compressibility import apply_to_coefficients, compressibility_constants
+    from rotorlyap.model.parameters import BladeParameters
+
+    consts = compressibility_constants(BladeParameters(compressibility="prandtl-glauert"))
+    a = BladeParameters().speed_of_sound
+    alpha = np.array([0.05, -0.1, np.pi - 0.05])
+    speed = np.array([0.5, 0.3, 0.2]) * a
+    cl0, cd0, cm0 = np.array([0.5, -0.6, -0.4]), np.zeros(3), np.array([-0.01, 0.02, 0.03])
+    cl, _, cm, f = apply_to_coefficients(alpha, speed, cl0, cd0, cm0, consts)
+    beta_inv = 1.0 / np.sqrt(1.0 - (speed / a) ** 2)
+    np.testing.assert_allclose(f, [beta_inv[0], beta_inv[1], 1.0], rtol=1e-14)
+    np.testing.assert_allclose(cl, cl0 * f, rtol=1e-14)
+    np.testing.assert_allclose(cm, cm0 * f, rtol=1e-14)

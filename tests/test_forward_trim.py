@@ -184,3 +184,21 @@ def test_the_trim_from_a_neighbouring_solution_is_the_same_trim(table_i):
     direct = forward_flight_trim(table_i, 0.25)
     np.testing.assert_allclose(cont.controls_deg, direct.controls_deg, atol=1e-7)
     assert cont.shaft_tilt == pytest.approx(direct.shaft_tilt, abs=1e-9)
+
+
+def test_the_trims_hover_state_is_the_hover_trims_equilibrium_past_a_fold():
+    """The backward C.G. with compressible sections trims in hover past a fold of the branch of
+    equilibria: a new equilibrium at the trimmed collective (continuation in the collective) is
+    another, stable state, while the trimmed one is the hover trim's (thrust = weight) and is
+    unstable in linear theory. The trim's steady motion must be that state."""
+    from rotorlyap.analysis.floquet import blade_floquet
+    from rotorlyap.model.blade import Blade
+
+    p = BladeParameters.flight_case("backward")
+    tr = forward_flight_trim(p, 0.0)
+    trimmed = Blade(p, 0.0)  # collective None: trimmed in hover, its equilibrium kept
+    np.testing.assert_allclose(tr.steady.state, trimmed.equilibrium(), atol=1e-8)
+    other = Blade(tr.params, 0.0).equilibrium()  # collective given: continuation from zero
+    assert np.abs(other - tr.steady.state).max() > 0.01
+    g_trim = blade_floquet(tr.params, 0.0, steady=tr.steady).exponents.real.max()
+    assert g_trim == pytest.approx(blade_floquet(p, 0.0).exponents.real.max(), abs=1e-9)

@@ -18,9 +18,9 @@ The pitch-damping couple of quasi-steady thin-airfoil theory,
 pitch rate of the section relative to the hub frame (``BladeParameters.cm_pitch_rate``).
 
 With ``params.compressibility = "prandtl-glauert"`` the section coefficients are corrected by
-the section Mach number ``|w| / params.speed_of_sound`` (forward-flow lift times the
-Prandtl-Glauert factor, capped at M = 0.8; Lock's drag rise above Korn's critical Mach
-number): :mod:`rotorlyap.model.compressibility`. With ``"none"`` (default) the loads are the
+the section Mach number ``|w| / params.speed_of_sound`` (forward-flow lift, moment and
+pitch-damping couple times the Prandtl-Glauert factor, capped at M = 0.8; Lock's drag rise above
+Korn's critical Mach number): :mod:`rotorlyap.model.compressibility`. With ``"none"`` (default) the loads are the
 incompressible ones, bit for bit.
 
 The induced inflow ``lambda_i(r, psi) = a(r) + b(r) cos psi`` comes from
@@ -184,14 +184,16 @@ class StripAerodynamics:
         if self.params.twist != 0.0:
             alpha = alpha + self._phi
         cl, cd, cm = self.params.airfoil.coefficients(alpha)
+        pg = None
         if self.compressibility.enabled:
-            cl, cd = apply_to_coefficients(alpha, Vm, cl, cd, self.compressibility)
+            cl, cd, cm, pg = apply_to_coefficients(alpha, Vm, cl, cd, cm, self.compressibility)
         qn = self._qn * Vm
         Fy = qn * (cd * u_y + cl * u_z)
         Fz = qn * (cd * u_z - cl * u_y)
         Mx_ac = self._mn * V2 * cm
         if self._pitch_damped:
-            Mx_ac = Mx_ac + self.pitch_damping_couple(T, Vm)
+            couple = self.pitch_damping_couple(T, Vm)
+            Mx_ac = Mx_ac + (couple if pg is None else couple * pg)
         sFy = Fy.sum(axis=0)
         sFz = Fz.sum(axis=0)
         Mx = (ry * Fz - rz * Fy + Mx_ac).sum(axis=0)

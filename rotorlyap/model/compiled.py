@@ -194,12 +194,15 @@ def _accelerations(psi, z3, z4, z5, T, sc, st, tab, acc):
             cl = tab[i, 0] + u * tab[i, 1]
             cd = tab[i, 2] + u * tab[i, 3]
             cm = tab[i, 4] + u * tab[i, 5]
+            pg = 1.0
             if compressible:
                 # compressibility.apply_to_coefficients, the same operations in the same order
                 mach = Vm * inv_a
                 me = mach if mach < mach_cap else mach_cap
                 if u0 >= 0.5 * math.pi and u0 <= 1.5 * math.pi:  # forward flow
-                    cl = cl * (1.0 / math.sqrt(1.0 - me * me))
+                    pg = 1.0 / math.sqrt(1.0 - me * me)
+                cl = cl * pg
+                cm = cm * pg
                 dm = mach - (mcrit0 - 0.1 * abs(cl))
                 if dm > 0.0:
                     cd = cd + _WAVE * (dm * dm) * (dm * dm)
@@ -208,7 +211,8 @@ def _accelerations(psi, z3, z4, z5, T, sc, st, tab, acc):
             Fz = qn * (cd * u_z - cl * u_y)
             Mx_ac = st[_MN, k] * V2 * cm
             if damped:
-                Mx_ac = Mx_ac + st[_DN, k] * Vm * q_rel
+                couple = st[_DN, k] * Vm * q_rel
+                Mx_ac = Mx_ac + (couple * pg if compressible else couple)
             sFy += Fy
             sFz += Fz
             Mx += st[_RY, k] * Fz - st[_RZ, k] * Fy + Mx_ac

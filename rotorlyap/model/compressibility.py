@@ -4,6 +4,7 @@ The paper's section model (:mod:`rotorlyap.model.airfoil`) has no Mach dependenc
 ``BladeParameters.compressibility = "prandtl-glauert"`` the strip loads
 (:class:`rotorlyap.model.aero.StripAerodynamics` and the compiled kernels of
 :mod:`rotorlyap.model.compiled`) correct the incompressible coefficients ``cl``, ``cd`` at
+(and ``cm`` and the pitch-damping couple, see below) at
 each station by the section Mach number ``M = |w| / a`` (``|w|`` the in-plane air speed of the
 section, ``a`` = ``BladeParameters.speed_of_sound``) as follows.
 
@@ -32,8 +33,10 @@ Choices and their limits (stated, not hidden):
   scales ``cl_max``, whereas the tabulated ``cl_max`` *falls* with Mach (the same C81 table:
   1.33 at M = 0 and 0.2, 0.98 at M = 0.6, 0.85 at M = 0.75): the corrected model is not
   meant for stalled sections at high Mach, and :func:`validity_map` flags stalled sections;
-* ``cm`` is left as it is: the pitching moment of the lift about the pitch axis, by far the
-  larger part, scales with the lift; ``cm_ac`` of the NACA 23012 is small (-0.014).
+* ``cm`` and the quasi-steady pitch-damping couple (``BladeParameters.cm_pitch_rate``) take
+  the same factor in forward flow: the linearised theory scales every pressure coefficient
+  alike, and correcting the lift alone would weaken the aerodynamic pitch damping against the
+  pitch-flap coupling by the factor, a bias of exactly the flutter margin this report measures.
 
 Drag: Lock's fourth-power drag rise with Korn's drag-divergence Mach number, in the form used
 in conceptual design [GurMasonSchetz2010], Korn's equation as given by [Mason1990] and Lock's
@@ -337,13 +340,19 @@ def compressibility_constants(params: Any) -> CompressibilityConstants:
 
 
 def apply_to_coefficients(alpha: FloatArray, speed: FloatArray, cl: FloatArray, cd: FloatArray,
-                          constants: CompressibilityConstants) -> tuple[FloatArray, FloatArray]:
-    """The corrected ``(cl, cd)`` of the strip loads (module docstring), elementwise.
+                          cm: FloatArray, constants: CompressibilityConstants
+                          ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """The corrected ``(cl, cd, cm)`` of the strip loads (module docstring), elementwise, and the
+    factor applied to the section's pressures.
 
     The operations, in order, of the compiled kernel (:mod:`rotorlyap.model.compiled`):
-    ``M = |w| (1/a)``; ``f = 1/sqrt(1 - min(M, cap)^2)``; ``cl *= f`` where
-    ``mod(alpha + pi, 2 pi)`` lies in ``[pi/2, 3 pi/2]`` (forward flow);
-    ``d = M - (M_crit0 - 0.1 |cl|)``; ``cd += 20 d^2 d^2`` where ``d > 0``.
+    ``M = |w| (1/a)``; ``f = 1/sqrt(1 - min(M, cap)^2)`` where ``mod(alpha + pi, 2 pi)`` lies in
+    ``[pi/2, 3 pi/2]`` (forward flow), 1 elsewhere; ``cl *= f``, ``cm *= f``;
+    ``d = M - (M_crit0 - 0.1 |cl|)``; ``cd += 20 d^2 d^2`` where ``d > 0``. Prandtl-Glauert scales
+    every pressure coefficient of the section alike, so the moment and the quasi-steady
+    pitch-damping couple take the factor ``f`` too (the strip loads multiply the couple by the
+    returned factor): scaling the lift alone would weaken the pitch damping against the
+    pitch-flap coupling by the same factor and bias a flutter margin.
 
     Parameters
     ----------
@@ -351,22 +360,27 @@ def apply_to_coefficients(alpha: FloatArray, speed: FloatArray, cl: FloatArray, 
         Angles of attack, rad (any range).
     speed : numpy.ndarray
         Section air speeds ``|w|``, m/s.
-    cl, cd : numpy.ndarray
+    cl, cd, cm : numpy.ndarray
         Incompressible coefficients at ``alpha``.
     constants : CompressibilityConstants
         From :func:`compressibility_constants`.
+
+    Returns
+    -------
+    cl, cd, cm, factor : numpy.ndarray
     """
     two_pi = 2.0 * math.pi
     mach = speed * constants.inverse_speed_of_sound
     me = np.minimum(mach, constants.mach_cap)
-    factor = 1.0 / np.sqrt(1.0 - me * me)
     u = np.mod(alpha + math.pi, two_pi)
     forward = (u >= 0.5 * math.pi) & (u <= 1.5 * math.pi)
-    cl = np.where(forward, cl * factor, cl)
+    factor = np.where(forward, 1.0 / np.sqrt(1.0 - me * me), 1.0)
+    cl = cl * factor
+    cm = cm * factor
     d = mach - (constants.critical_mach_zero_lift - 0.1 * np.abs(cl))
     d = np.maximum(d, 0.0)
     cd = cd + WAVE_DRAG_FACTOR * (d * d) * (d * d)
-    return cl, cd
+    return cl, cd, cm, factor
 
 
 # --------------------------------------------------------------------------------------
@@ -512,7 +526,7 @@ def validity_map(blade: Any, steady: ArrayLike | Callable[[Any], Any], psi: Arra
     alpha = np.mod(alpha_raw + math.pi, 2.0 * math.pi) - math.pi
     cl = np.asarray(p.airfoil.coefficients(alpha_raw)[0], dtype=np.float64)
     if consts.enabled:
-        cl = apply_to_coefficients(alpha_raw, speed, cl, np.zeros_like(cl), consts)[0]
+        cl = apply_to_coefficients(alpha_raw, speed, cl, np.zeros_like(cl), np.zeros_like(cl), consts)[0]
     mdd = (consts.critical_mach_zero_lift - 0.1 * np.abs(cl)) + CRITICAL_MACH_OFFSET
     reverse = np.abs(alpha) > 0.5 * math.pi
     stalled = ~reverse & ((alpha > angles[1]) | (alpha < angles[0]))

@@ -60,7 +60,7 @@ from ..errors import PeriodicMotionError, TrimError
 from .blade import Blade
 from .inflow import mean_inflow, momentum_inflow
 from .parameters import BladeParameters
-from .steady import PeriodicMotion, _differentiation_matrix, _first_harmonics, periodic_motion
+from .steady import PeriodicMotion, SteadyMotion, _differentiation_matrix, _first_harmonics, periodic_motion
 
 __all__ = ["TRIM_TARGETS", "ForwardFlightTrim", "forward_flight_trim", "rotor_forces"]
 
@@ -115,6 +115,17 @@ class ForwardFlightTrim:
     flight_speed: float
     induced_inflow: float
     iterations: int
+
+    @property
+    def steady(self) -> SteadyMotion:
+        """The trim's steady motion for the analyses (``steady=`` of
+        :func:`rotorlyap.analysis.stability.blade_stability` and
+        :func:`rotorlyap.analysis.floquet.blade_floquet`): the periodic motion, or in hover its
+        constant state. Pass it rather than leaving the steady motion to :class:`Blade`: past a
+        fold of the hover branch, a new equilibrium at the trimmed collective is another one."""
+        if self.mu == 0.0:
+            return SteadyMotion.constant(self.motion.z0.copy(), "trimmed hover")
+        return self.motion.steady
 
     @property
     def shaft_tilt(self) -> float:

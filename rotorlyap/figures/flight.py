@@ -1,0 +1,988 @@
+"""Figures and tables of the chapter on the trimmed helicopter in forward flight.
+
+The paper's forward-flight condition (the hover collective, no cyclic pitch, an untilted disc,
+Glauert's inflow) is not a flight condition: the rotor lifts far more than the weight. This
+module compares it with a trimmed helicopter (:func:`rotorlyap.model.forward_trim.forward_flight_trim`
+on :meth:`rotorlyap.model.parameters.BladeParameters.flight_case`), measures what the choices the
+paper leaves open do to the stability verdicts (inflow model, compressibility, the sign of the
+pitch-flap coupling, the pitch inertia), and tests its Fig. 8 under every combination of the
+readings it leaves open (:func:`forensic_data`).
+
+As in :mod:`rotorlyap.figures.paper`, data functions return frozen dataclasses with a
+``summary()`` (the printed text, rounded to the digits the computation determines) and a
+``facts()`` (the numbers the chapter quotes); ``figure_*`` functions return closed figures.
+Growth rates are the largest real part of the Floquet exponents, per radian of azimuth ("per
+rev" in the text, the usual unit of rotor dynamics: 1/rad of ``psi``).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..analysis.floquet import blade_floquet
+from ..analysis.functions import quadratic_function
+from ..analysis.stability import blade_stability
+from ..conventions import PAPER_TEST_DISTURBANCES, TWO_PI
+from ..errors import NotAsymptoticallyStableError, TrimError
+from ..model.blade import Blade
+from ..model.compressibility import validity_map
+from ..model.forward_trim import forward_flight_trim
+from ..model.inflow import kx_factor
+from ..model.mass import mass_properties
+from ..model.parameters import CG_POSITIONS, BladeParameters
+from ..model.steady import tabulate_motion
+from .export import markdown_table
+from .style import CG_COLORS, subplots
+
+__all__ = [
+    "CASES", "MU_TRIM", "MU_FORENSIC", "INFLOW_CHOICES", "PUMA_SECTION", "puma_radius_of_gyration",
+    "TrimData", "trim_data", "figure_trim",
+    "DiscData", "disc_data", "figure_disc",
+    "ModelChoiceData", "model_choice_data",
+    "Delta3Data", "delta3_data",
+    "PitchInertiaData", "pitch_inertia_data", "figure_pitch_inertia",
+    "FORENSIC_FACTORS", "ForensicData", "forensic_data",
+    "VERDICT_CANDIDATES", "verdict_data", "verdict_summary", "verdict_facts",
+]
+
+CASES = ("forward", "neutral", "backward")
+
+#: Advance ratios of the trim sweep.
+MU_TRIM = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3)
+
+#: Advance ratios of the forensic test of Fig. 8 (the paper's range, in its Fig. 8 steps).
+MU_FORENSIC = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
+
+#: Inflow models compared.
+INFLOW_CHOICES = ("glauert", "drees", "pitt-peters")
+
+_DEG = math.pi / 180.0
+
+#: A published blade of this class for the pitch inertia: the SA330 Puma research blade's main
+#: aerofoil span carries 0.109 kg m of torsional inertia per metre on 8.929 kg/m, chord 0.537 m
+#: [PumaBladeData], a radius of gyration of 0.206 chord about the feathering axis.
+PUMA_SECTION = {"torsional_inertia_per_length": 0.109, "mass_per_length": 8.929, "chord": 0.537}
+
+
+def puma_radius_of_gyration() -> float:
+    """The Puma blade section's pitch radius of gyration, fraction of chord (:data:`PUMA_SECTION`)."""
+    s = PUMA_SECTION
+    return math.sqrt(s["torsional_inertia_per_length"] / s["mass_per_length"]) / s["chord"]
+
+
+def _growth(params: BladeParameters, mu: float, motion) -> float:
+    """Largest real part of the Floquet exponents about ``motion`` (a PeriodicMotion or None
+    for hover), per rad of azimuth."""
+    steady = "periodic" if motion is None else motion
+    return float(blade_floquet(params, mu, steady=steady).exponents.real.max())
+
+
+def _lift_ratio_or_nan(params: BladeParameters, mu: float, target: str) -> tuple[float, object]:
+    try:
+        tr = forward_flight_trim(params, mu, target)
+    except TrimError:
+        return float("nan"), None
+    return tr.lift_over_weight, tr
+
+
+def _fmt(values, digits: int) -> str:
+    return "[" + " ".join("nan" if not np.isfinite(v) else f"{v:.{digits}f}" for v in np.ravel(values)) + "]"
+
+
+# --------------------------------------------------------------------------------------
+# The trim sweep
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class TrimData:
+    """The trimmed helicopter against the paper's condition, per C.G. and advance ratio.
+
+    Attributes
+    ----------
+    cases : tuple of str
+    mu_values : numpy.ndarray
+        (m,).
+    controls_deg : numpy.ndarray
+        Trimmed collective, ``cyclic_cos`` and ``cyclic_sin``, deg, (k, m, 3).
+    shaft_tilt_deg : numpy.ndarray
+        Forward shaft tilt of the trim, deg, (k, m).
+    induced_inflow : numpy.ndarray
+        Induced inflow ratio of the trim, (k, m).
+    paper_lift_ratio : numpy.ndarray
+        Vertical rotor force over the weight in the paper's condition (table_i, hover controls,
+        periodic motion), (k, m); NaN where the blade has no periodic motion near hover.
+    growth_paper : numpy.ndarray
+        Largest Floquet real part about the paper's condition's periodic motion, per rad, (k, m).
+    growth_trimmed : numpy.ndarray
+        The same about the trimmed helicopter's periodic motion, (k, m).
+    retreating_alpha_deg : numpy.ndarray
+        Mean angle of attack of the outer 10 % of the span at psi = 270 deg, deg, (2, m):
+        paper's condition, trimmed (forward C.G.).
+    """
+
+    cases: tuple
+    mu_values: np.ndarray
+    controls_deg: np.ndarray
+    shaft_tilt_deg: np.ndarray
+    induced_inflow: np.ndarray
+    paper_lift_ratio: np.ndarray
+    growth_paper: np.ndarray
+    growth_trimmed: np.ndarray
+    retreating_alpha_deg: np.ndarray
+
+    def summary(self) -> str:
+        """Per case: the paper's lift over weight (0.01), the trimmed controls and tilt (0.01 deg),
+        both growth rates (0.001 per rad)."""
+        lines = [f"mu: {_fmt(self.mu_values, 3)}"]
+        for i, case in enumerate(self.cases):
+            lines += [
+                f"{case} C.G.",
+                f"  paper's condition, lift / weight: {_fmt(self.paper_lift_ratio[i], 2)}",
+                f"  trimmed collective, deg:          {_fmt(self.controls_deg[i, :, 0], 2)}",
+                f"  trimmed cyclic cos, deg:          {_fmt(self.controls_deg[i, :, 1], 2)}",
+                f"  trimmed cyclic sin, deg:          {_fmt(self.controls_deg[i, :, 2], 2)}",
+                f"  trimmed shaft tilt, deg:          {_fmt(self.shaft_tilt_deg[i], 2)}",
+                f"  growth rate, paper's condition:   {_fmt(self.growth_paper[i], 3)}",
+                f"  growth rate, trimmed:             {_fmt(self.growth_trimmed[i], 3)}",
+            ]
+        lines.append(f"forward C.G., outboard angle of attack at psi = 270 deg, deg: paper's "
+                     f"{_fmt(self.retreating_alpha_deg[0], 1)}, trimmed {_fmt(self.retreating_alpha_deg[1], 1)}")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """The numbers the chapter quotes."""
+        j = int(np.argmin(np.abs(self.mu_values - 0.25)))
+        k = int(np.argmin(np.abs(self.mu_values - 0.15)))
+        ratios = self.paper_lift_ratio[:, 1:]
+        return {
+            "ch8_paper_lw_max": f"{np.nanmax(ratios):.2f}",
+            "ch8_paper_lw_fw15": f"{self.paper_lift_ratio[0, k]:.2f}",
+            "ch8_tilt25": f"{self.shaft_tilt_deg[0, j]:.1f}",
+            "ch8_coll25": f"{self.controls_deg[0, j, 0]:.1f}",
+            "ch8_coll0": f"{self.controls_deg[0, 0, 0]:.1f}",
+            "ch8_b1s25": f"{self.controls_deg[0, j, 2]:.1f}",
+            "ch8_alpha270_paper": f"{self.retreating_alpha_deg[0, j]:.1f}",
+            "ch8_alpha270_trim": f"{self.retreating_alpha_deg[1, j]:.1f}",
+            "ch8_growth_trim_max": f"{np.nanmax(self.growth_trimmed):.3f}",
+            "ch8_growth_bw_paper25": f"{self.growth_paper[-1, j]:.3f}",
+            "ch8_growth_bw_trim25": f"{self.growth_trimmed[-1, j]:.3f}",
+        }
+
+
+def _outboard_alpha_270(params: BladeParameters, mu: float, motion) -> float:
+    blade = Blade(params, mu)
+    psi = np.array([1.5 * math.pi])
+    al = blade.angle_of_attack(psi, motion.xi(psi))[0]
+    outer = blade.r_over_R >= 0.9
+    return float(np.degrees(al[outer].mean()))
+
+
+def trim_data(cases=CASES, mu_values=MU_TRIM) -> TrimData:
+    """Trim every case at every advance ratio (:meth:`BladeParameters.flight_case`, propulsive
+    trim) and compute the paper's condition beside it (:meth:`BladeParameters.table_i`, hover
+    controls), with the Floquet growth rate of both."""
+    mu_values = np.asarray(mu_values, dtype=float)
+    k, m = len(cases), mu_values.size
+    ctrl = np.full((k, m, 3), np.nan)
+    tilt = np.full((k, m), np.nan)
+    lam = np.full((k, m), np.nan)
+    ratio = np.full((k, m), np.nan)
+    g_paper = np.full((k, m), np.nan)
+    g_trim = np.full((k, m), np.nan)
+    a270 = np.full((2, m), np.nan)
+    for i, case in enumerate(cases):
+        for j, mu in enumerate(mu_values):
+            tr = forward_flight_trim(BladeParameters.flight_case(case), float(mu))
+            ctrl[i, j] = tr.controls_deg
+            tilt[i, j] = math.degrees(tr.shaft_tilt)
+            lam[i, j] = tr.induced_inflow
+            g_trim[i, j] = _growth(tr.params, float(mu), tr.motion)
+            ratio[i, j], paper = _lift_ratio_or_nan(BladeParameters.table_i(case), float(mu), "none")
+            if paper is not None:
+                g_paper[i, j] = _growth(paper.params, float(mu), paper.motion)
+            if i == 0 and mu > 0:
+                a270[1, j] = _outboard_alpha_270(tr.params, float(mu), tr.motion)
+                if paper is not None:
+                    a270[0, j] = _outboard_alpha_270(paper.params, float(mu), paper.motion)
+    return TrimData(cases=tuple(cases), mu_values=mu_values, controls_deg=ctrl, shaft_tilt_deg=tilt,
+                    induced_inflow=lam, paper_lift_ratio=ratio, growth_paper=g_paper, growth_trimmed=g_trim,
+                    retreating_alpha_deg=a270)
+
+
+def figure_trim(data: TrimData, figsize=(12, 3.8)):
+    """Three panels: the paper's lift over weight; the trimmed controls and tilt (forward C.G.);
+    the growth rates of both conditions. Returns the figure."""
+    fig, ax = subplots(1, 3, figsize=figsize)
+    mu = data.mu_values
+    for i, case in enumerate(data.cases):
+        c = CG_COLORS[case]
+        ax[0].plot(mu, data.paper_lift_ratio[i], "o-", color=c, label=f"{case} C.G.")
+        ax[2].plot(mu, data.growth_paper[i], "o--", color=c, label=f"{case}, paper's condition")
+        ax[2].plot(mu, data.growth_trimmed[i], "s-", color=c, label=f"{case}, trimmed")
+    ax[0].axhline(1.0, color="k", lw=0.8)
+    ax[0].text(mu[-1], 1.02, "trimmed: 1", ha="right", va="bottom", fontsize=8)
+    ax[0].set(xlabel=r"advance ratio $\mu$", ylabel="vertical rotor force / weight",
+              title="(a) the paper's condition overloads the rotor")
+    ax[0].legend(fontsize=8)
+    labels = ("collective", r"cyclic $\theta_{1c}$", r"cyclic $\theta_{1s}$")
+    styles = ("-", "--", ":")
+    for q in range(3):
+        ax[1].plot(mu, data.controls_deg[0, :, q], styles[q], color="tab:blue", label=labels[q])
+    ax[1].plot(mu, data.shaft_tilt_deg[0], "-", color="tab:orange", label="shaft tilt (forward)")
+    ax[1].axhline(0.0, color="k", lw=0.5)
+    ax[1].set(xlabel=r"advance ratio $\mu$", ylabel="deg", title="(b) trim, forward C.G.")
+    ax[1].legend(fontsize=8)
+    ax[2].axhline(0.0, color="k", lw=0.8)
+    ax[2].set(xlabel=r"advance ratio $\mu$", ylabel="largest Floquet real part, 1/rad",
+              title="(c) linear stability")
+    from matplotlib.lines import Line2D
+
+    style = [Line2D([], [], color="k", ls="--", marker="o", label="paper's condition"),
+             Line2D([], [], color="k", ls="-", marker="s", label="trimmed helicopter")]
+    ax[2].legend(handles=style, fontsize=8, loc="lower right")
+    fig.tight_layout()
+    return fig
+
+
+# --------------------------------------------------------------------------------------
+# The disc: angle of attack, stall, reverse flow, Mach number
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class DiscData:
+    """The section model's range over the disc at one advance ratio, for two conditions.
+
+    Attributes
+    ----------
+    labels : tuple of str
+        The conditions (paper's, trimmed).
+    mu : float
+    psi : numpy.ndarray
+        (n,), rad.
+    r_over_R : numpy.ndarray
+        (s,).
+    alpha_deg : numpy.ndarray
+        Angle of attack, deg, (2, n, s).
+    mach : numpy.ndarray
+        Section Mach number, (2, n, s).
+    stalled, reverse_flow, transonic : numpy.ndarray
+        Flags of :func:`rotorlyap.model.compressibility.validity_map`, (2, n, s).
+    stall_deg : tuple of float
+        The stall angles, deg.
+    """
+
+    labels: tuple
+    mu: float
+    psi: np.ndarray
+    r_over_R: np.ndarray
+    alpha_deg: np.ndarray
+    mach: np.ndarray
+    stalled: np.ndarray
+    reverse_flow: np.ndarray
+    transonic: np.ndarray
+    stall_deg: tuple
+
+    def summary(self) -> str:
+        """Per condition: fractions of the disc stalled, in reverse flow, transonic (0.001) and
+        the largest Mach number (0.01)."""
+        lines = [f"mu = {self.mu:g}; fractions of the (azimuth, station) grid"]
+        for i, lab in enumerate(self.labels):
+            lines.append(f"  {lab}: stalled {self.stalled[i].mean():.3f}, reverse flow {self.reverse_flow[i].mean():.3f}, "
+                         f"transonic {self.transonic[i].mean():.3f}, largest Mach {self.mach[i].max():.2f}")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """Stall fractions (percent, one decimal) and the largest Mach number (0.01)."""
+        return {
+            "ch8_stall_paper": f"{100 * self.stalled[0].mean():.1f}",
+            "ch8_stall_trim": f"{100 * self.stalled[1].mean():.1f}",
+            "ch8_mach_max": f"{self.mach[1].max():.2f}",
+            "ch8_transonic_trim": f"{100 * self.transonic[1].mean():.1f}",
+            "ch8_disc_mu": f"{self.mu:g}",
+        }
+
+
+def disc_data(case: str = "forward", mu: float = 0.25, n_azimuth: int = 72, n_stations: int = 24) -> DiscData:
+    """:func:`rotorlyap.model.compressibility.validity_map` for the paper's condition
+    (table_i, hover controls, its periodic motion) and the trimmed helicopter (flight_case),
+    both with ``n_stations`` stations for a finer picture."""
+    out = []
+    for params, target in ((BladeParameters.table_i(case, n_stations=n_stations), "none"),
+                           (BladeParameters.flight_case(case, n_stations=n_stations), "propulsive")):
+        tr = forward_flight_trim(params, mu, target)
+        out.append(validity_map(Blade(tr.params, mu), tr.motion.xi, n_azimuth=n_azimuth))
+    v0 = out[0]
+    return DiscData(labels=("paper's condition", "trimmed helicopter"), mu=float(mu), psi=v0.psi,
+                    r_over_R=v0.r_over_R, alpha_deg=np.degrees(np.stack([v.alpha for v in out])),
+                    mach=np.stack([v.mach for v in out]), stalled=np.stack([v.stalled for v in out]),
+                    reverse_flow=np.stack([v.reverse_flow for v in out]),
+                    transonic=np.stack([v.transonic for v in out]),
+                    stall_deg=tuple(math.degrees(a) for a in v0.stall_angles))
+
+
+def figure_disc(data: DiscData, figsize=(11, 5.4)):
+    """Two discs seen from above (psi = 0 over the tail, advancing side on the right): the
+    angle of attack in colour, stall and reverse flow hatched, the transonic region outlined."""
+    from matplotlib.colors import BoundaryNorm
+
+    fig, ax = subplots(1, 2, figsize=figsize, subplot_kw={"projection": "polar"})
+    th = np.concatenate([data.psi, [data.psi[0] + TWO_PI]])
+    r = data.r_over_R
+    levels = np.arange(-8.0, 22.0, 2.0)
+    norm = BoundaryNorm(levels, 256, extend="both")
+    for i, lab in enumerate(data.labels):
+        a = ax[i]
+        a.set_theta_zero_location("S")
+        a.set_theta_direction(1)
+        al = np.clip(data.alpha_deg[i], -90, 90)
+        al = np.where(data.reverse_flow[i], np.nan, al)
+        al = np.vstack([al, al[:1]])
+        T, Rr = np.meshgrid(th, r, indexing="ij")
+        cs = a.contourf(T, Rr, al, levels=levels, cmap="viridis", norm=norm, extend="both")
+        for flag, hatch in ((data.stalled[i], "xxx"), (data.reverse_flow[i], "///")):
+            f = np.vstack([flag, flag[:1]]).astype(float)
+            if f.any():
+                a.contourf(T, Rr, f, levels=[0.5, 1.5], colors="none", hatches=[hatch])
+                a.contour(T, Rr, f, levels=[0.5], colors="k", linewidths=0.6)
+        tr = np.vstack([data.transonic[i], data.transonic[i][:1]]).astype(float)
+        if tr.any():
+            a.contour(T, Rr, tr, levels=[0.5], colors="tab:red", linewidths=1.5)
+        a.set_ylim(0, 1)
+        a.set_yticks([0.25, 0.5, 0.75, 1.0])
+        a.set_yticklabels(["", "r/R = 0.5", "", "1"], fontsize=7)
+        a.set_rlabel_position(225)
+        a.set_xticks(np.radians([0, 90, 180, 270]))
+        a.set_xticklabels(["0° tail", "90°\nadvancing", "180° nose", "270°\nretreating"], fontsize=8)
+        a.tick_params(axis="x", pad=6)
+        a.set_title(f"{lab}, $\\mu$ = {data.mu:g}", fontsize=10, pad=18)
+    cb = fig.colorbar(cs, ax=ax, orientation="horizontal", fraction=0.05, pad=0.12, aspect=40)
+    cb.set_label("angle of attack, deg (hatched x: stalled, beyond "
+                 f"{data.stall_deg[1]:.0f} deg; hatched /: reverse flow; red line: transonic, M > M_dd)", fontsize=8)
+    return fig
+
+
+# --------------------------------------------------------------------------------------
+# Inflow model and compressibility
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ModelChoiceData:
+    """Trim and growth rate of the trimmed helicopter under each inflow model and with and
+    without compressibility, per C.G. and advance ratio.
+
+    Attributes
+    ----------
+    cases : tuple of str
+    mu_values : numpy.ndarray
+        (m,).
+    variants : tuple of str
+        Labels: one per inflow model (compressible sections), then Pitt-Peters incompressible.
+    kx : numpy.ndarray
+        Longitudinal inflow gradient of each variant at the forward C.G.'s trim, (v, m).
+    collective_deg : numpy.ndarray
+        Trimmed collective, deg, (v, k, m).
+    lateral_cyclic_deg : numpy.ndarray
+        Trimmed ``cyclic_cos`` of the forward C.G., deg, (v, m): what cancels the lateral
+        flapping the longitudinal inflow gradient drives.
+    growth : numpy.ndarray
+        Largest Floquet real part, per rad, (v, k, m).
+    """
+
+    cases: tuple
+    mu_values: np.ndarray
+    variants: tuple
+    kx: np.ndarray
+    collective_deg: np.ndarray
+    lateral_cyclic_deg: np.ndarray
+    growth: np.ndarray
+
+    def summary(self) -> str:
+        """k_x (0.01), collective (0.01 deg) and growth rate (0.001 per rad) of each variant."""
+        lines = [f"mu: {_fmt(self.mu_values, 3)}"]
+        for v, lab in enumerate(self.variants):
+            lines.append(f"{lab}: k_x {_fmt(self.kx[v], 2)}, forward C.G. cyclic cos, deg {_fmt(self.lateral_cyclic_deg[v], 2)}")
+            for i, case in enumerate(self.cases):
+                lines.append(f"  {case:8s} collective {_fmt(self.collective_deg[v, i], 2)}  growth {_fmt(self.growth[v, i], 3)}")
+        return "\n".join(lines)
+
+    def markdown(self) -> str:
+        """The growth rates at the largest advance ratio as a table (0.001 per rad)."""
+        j = -1
+        header = (["model", "k_x"] + [f"growth rate, {c} C.G., 1/rad" for c in self.cases]
+                  + ["collective, forward C.G., deg", "lateral cyclic, forward C.G., deg"])
+        rows = [[lab, f"{self.kx[v, j]:.2f}"] + [f"{self.growth[v, i, j]:.3f}" for i in range(len(self.cases))]
+                + [f"{self.collective_deg[v, 0, j]:.2f}", f"{self.lateral_cyclic_deg[v, j]:.2f}"]
+                for v, lab in enumerate(self.variants)]
+        return markdown_table(header, rows)
+
+    def facts(self) -> dict:
+        """Largest spread of the growth rates and the lateral cyclic between the inflow models,
+        the backward C.G.'s hover growth rate with and without compressibility."""
+        n_inflow = len(INFLOW_CHOICES)
+        spread = np.nanmax(self.growth[:n_inflow], axis=0) - np.nanmin(self.growth[:n_inflow], axis=0)
+        pg = self.variants.index("pitt-peters")
+        inc = len(self.variants) - 1
+        dcoll = self.collective_deg[inc] - self.collective_deg[pg]
+        dlat = np.nanmax(self.lateral_cyclic_deg[:n_inflow], axis=0) - np.nanmin(self.lateral_cyclic_deg[:n_inflow], axis=0)
+        return {
+            "ch8_inflow_spread": f"{np.nanmax(spread):.3f}",
+            "ch8_inflow_dlat": f"{np.nanmax(dlat):.1f}",
+            "ch8_compr_bw_hover": f"{self.growth[pg, -1, 0]:.3f}",
+            "ch8_incompr_bw_hover": f"{self.growth[inc, -1, 0]:.3f}",
+            "ch8_kx_glauert": f"{self.kx[0, -1]:.2f}",
+            "ch8_kx_pp": f"{self.kx[pg, -1]:.2f}",
+            "ch8_kx_pp_first": f"{self.kx[pg, 1]:.2f}",
+            "ch8_mu_first": f"{self.mu_values[1]:g}",
+            "ch8_compr_dcoll": f"{np.nanmax(np.abs(dcoll)):.1f}",
+            "ch8_model_mu_last": f"{self.mu_values[-1]:g}",
+        }
+
+
+def model_choice_data(cases=CASES, mu_values=(0.0, 0.05, 0.1, 0.15, 0.2, 0.25)) -> ModelChoiceData:
+    """:func:`trim_data`'s trim under Glauert, Drees and Pitt-Peters inflow (compressible
+    sections), and Pitt-Peters with incompressible sections."""
+    mu_values = np.asarray(mu_values, dtype=float)
+    variants = [(m, dict(inflow_model=m)) for m in INFLOW_CHOICES]
+    variants.append(("pitt-peters, incompressible", dict(compressibility="none")))
+    k, m, v = len(cases), mu_values.size, len(variants)
+    kx = np.full((v, m), np.nan)
+    coll = np.full((v, k, m), np.nan)
+    lat = np.full((v, m), np.nan)
+    growth = np.full((v, k, m), np.nan)
+    for a, (_, over) in enumerate(variants):
+        for i, case in enumerate(cases):
+            for j, mu in enumerate(mu_values):
+                p = BladeParameters.flight_case(case, **over)
+                tr = forward_flight_trim(p, float(mu))
+                coll[a, i, j] = tr.controls_deg[0]
+                growth[a, i, j] = _growth(tr.params, float(mu), tr.motion)
+                if i == 0:
+                    lat[a, j] = tr.controls_deg[1]
+                    kx[a, j] = kx_factor(p.inflow_model, float(mu), tr.induced_inflow + mu * math.tan(tr.shaft_tilt))
+    return ModelChoiceData(cases=tuple(cases), mu_values=mu_values, variants=tuple(lab for lab, _ in variants),
+                           kx=kx, collective_deg=coll, lateral_cyclic_deg=lat, growth=growth)
+
+
+# --------------------------------------------------------------------------------------
+# The sign of the pitch-flap coupling
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Delta3Data:
+    """Hover growth rates of the three C.G. cases under both signs of ``tan(delta3)``.
+
+    Attributes
+    ----------
+    cases : tuple of str
+    couplings : numpy.ndarray
+        The two values of ``pitch_flap_coupling`` (tan delta3), (2,).
+    growth : numpy.ndarray
+        Largest real part of the hover eigenvalues, per rad, (2, k).
+    growth_trimmed : numpy.ndarray
+        The same for the trimmed helicopter at ``mu``, (2, k).
+    mu : float
+    flap_frequency_sq : numpy.ndarray
+        Square of the flap frequency with the pitch hinge locked at the control (the
+        coupling's spring ``K_theta tan(delta3)^2`` and its flap-pitch term), per rev^2, (2,),
+        forward C.G.
+    """
+
+    cases: tuple
+    couplings: np.ndarray
+    growth: np.ndarray
+    growth_trimmed: np.ndarray
+    mu: float
+    flap_frequency_sq: np.ndarray
+
+    def aft_trend(self, row: int) -> str:
+        """'less stable aft' if the growth rate rises from forward to backward C.G., else 'more stable aft'."""
+        g = self.growth[row]
+        return "less stable aft" if g[-1] > g[0] else "more stable aft"
+
+    def summary(self) -> str:
+        """Growth rates (0.001 per rad) per sign and the aft trend."""
+        lines = []
+        for a, t in enumerate(self.couplings):
+            lines.append(f"tan(delta3) = {t:+.1f}: hover {_fmt(self.growth[a], 3)} ({self.aft_trend(a)}), "
+                         f"trimmed at mu = {self.mu:g} {_fmt(self.growth_trimmed[a], 3)}, "
+                         f"flap frequency^2 with pitch rigid {self.flap_frequency_sq[a]:.3f}")
+        return "\n".join(lines)
+
+    def facts(self) -> dict:
+        """The numbers the chapter quotes."""
+        out = {}
+        for a, name in enumerate(("neg", "pos")):
+            for i, case in enumerate(self.cases):
+                out[f"ch8_d3{name}_{case}"] = f"{self.growth[a, i]:.3f}"
+            out[f"ch8_d3{name}_nu2"] = f"{self.flap_frequency_sq[a]:.3f}"
+            out[f"ch8_d3{name}_trend"] = self.aft_trend(a)
+        return out
+
+
+def _locked_flap_frequency_sq(params: BladeParameters) -> float:
+    """Flap frequency squared in vacuum with lag and pitch held (their rows and columns of the
+    hover Jacobian removed): the stiffness the coupling adds to flap, per rev^2."""
+    p = replace(params, air_density=0.0, gravity=0.0, collective=0.0)
+    blade = Blade(p, 0.0)
+    z = blade.equilibrium()
+    J = blade.jacobian(0.0, z)
+    return float(-J[3, 0])
+
+
+def delta3_data(cases=CASES, couplings=(-0.4, 0.4), mu: float = 0.25) -> Delta3Data:
+    """Hover growth rates (:func:`rotorlyap.analysis.floquet.blade_floquet` at ``mu = 0``) and
+    the trimmed helicopter's at ``mu`` for each sign."""
+    couplings = np.asarray(couplings, dtype=float)
+    g = np.full((couplings.size, len(cases)), np.nan)
+    gt = np.full_like(g, np.nan)
+    nu2 = np.full(couplings.size, np.nan)
+    for a, t in enumerate(couplings):
+        for i, case in enumerate(cases):
+            g[a, i] = _growth(BladeParameters.table_i(case, pitch_flap_coupling=float(t)), 0.0, None)
+            tr = forward_flight_trim(BladeParameters.flight_case(case, pitch_flap_coupling=float(t)), mu)
+            gt[a, i] = _growth(tr.params, mu, tr.motion)
+        nu2[a] = _locked_flap_frequency_sq(BladeParameters.table_i("forward", pitch_flap_coupling=float(t)))
+    return Delta3Data(cases=tuple(cases), couplings=couplings, growth=g, growth_trimmed=gt, mu=float(mu),
+                      flap_frequency_sq=nu2)
+
+
+# --------------------------------------------------------------------------------------
+# The pitch inertia
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class PitchInertiaData:
+    """Hover growth rate of one C.G. case against the section's pitch radius of gyration.
+
+    Attributes
+    ----------
+    case : str
+    radius_of_gyration : numpy.ndarray
+        ``pitch_radius_of_gyration`` values, fraction of chord, (n,).
+    pitch_inertia : numpy.ndarray
+        Blade inertia about the pitch axis, kg m^2, (n,).
+    growth : numpy.ndarray
+        Largest real part of the hover eigenvalues, per rad, (n,).
+    assumed : float
+        The report's radius of gyration, fraction of chord.
+    """
+
+    case: str
+    radius_of_gyration: np.ndarray
+    pitch_inertia: np.ndarray
+    growth: np.ndarray
+    assumed: float
+
+    def summary(self) -> str:
+        """Inertia (0.01 kg m^2) and growth rate (0.001 per rad) along the sweep."""
+        return "\n".join([
+            f"{self.case} C.G., hover; pitch radius of gyration / chord: {_fmt(self.radius_of_gyration, 2)}",
+            f"  pitch inertia, kg m^2: {_fmt(self.pitch_inertia, 2)}",
+            f"  growth rate, 1/rad:    {_fmt(self.growth, 3)}",
+        ])
+
+    def facts(self) -> dict:
+        """Inertia and growth rate at the assumed value and at the ends of the sweep."""
+        i0 = int(np.argmin(np.abs(self.radius_of_gyration - self.assumed)))
+        return {
+            "ch8_pi_assumed": f"{self.pitch_inertia[i0]:.2f}",
+            "ch8_pi_growth_assumed": f"{self.growth[i0]:.3f}",
+            "ch8_pi_lo": f"{self.pitch_inertia[0]:.2f}",
+            "ch8_pi_hi": f"{self.pitch_inertia[-1]:.2f}",
+            "ch8_pi_growth_lo": f"{self.growth[0]:.3f}",
+            "ch8_pi_growth_hi": f"{self.growth[-1]:.3f}",
+        }
+
+
+def pitch_inertia_data(case: str = "backward", radii=(0.12, 0.16, 0.2, 0.24, 0.28, 0.32, 0.36)) -> PitchInertiaData:
+    """Sweep ``pitch_radius_of_gyration`` in hover (:meth:`BladeParameters.table_i`)."""
+    radii = np.asarray(radii, dtype=float)
+    inertia = np.empty(radii.size)
+    growth = np.empty(radii.size)
+    for i, k in enumerate(radii):
+        p = BladeParameters.table_i(case, pitch_radius_of_gyration=float(k))
+        inertia[i] = float(mass_properties(p).inertia[0, 0])
+        growth[i] = _growth(p, 0.0, None)
+    return PitchInertiaData(case=case, radius_of_gyration=radii, pitch_inertia=inertia, growth=growth,
+                            assumed=BladeParameters().pitch_radius_of_gyration)
+
+
+def figure_pitch_inertia(data: PitchInertiaData, reference: dict | None = None, figsize=(6.4, 3.8)):
+    """The hover growth rate against the blade's pitch inertia; ``reference`` = {label: kg m^2}
+    marks published inertias of comparable blades. Returns the figure."""
+    fig, ax = subplots(figsize=figsize)
+    ax.plot(data.pitch_inertia, data.growth, "o-", color=CG_COLORS.get(data.case, "k"), label=f"{data.case} C.G., hover")
+    i0 = int(np.argmin(np.abs(data.radius_of_gyration - data.assumed)))
+    ax.plot(data.pitch_inertia[i0], data.growth[i0], "k*", ms=12, label="the report's assumption")
+    for lab, val in (reference or {}).items():
+        ax.axvline(val, color="0.5", ls="--", lw=1)
+        ax.text(val, ax.get_ylim()[1], " " + lab, rotation=90, va="top", ha="left", fontsize=8)
+    ax.axhline(0.0, color="k", lw=0.8)
+    ax.set(xlabel=r"blade inertia about the pitch axis, kg m$^2$", ylabel="largest real part, 1/rad")
+    ax.legend(fontsize=8, loc="lower right")
+    fig.tight_layout()
+    return fig
+
+
+# --------------------------------------------------------------------------------------
+# The forensic Fig. 8
+# --------------------------------------------------------------------------------------
+
+#: The readings the paper leaves open, each with its choices (the first is the report's reading
+#: of the paper).
+FORENSIC_FACTORS = {
+    "condition": ("paper: hover controls, hover angles", "hover controls, periodic motion",
+                  "cyclic trim (zero flapping), periodic motion", "trimmed helicopter, periodic motion"),
+    "inflow": INFLOW_CHOICES,
+    "delta3": (-0.4, 0.4),
+    "function": ("energy", "quadratic"),
+    "cg_reading": ("neutral at the aerodynamic centre", "neutral at the pitch axis"),
+    "thrust": ("6400 kg", "4800 kg"),
+    "reading": ("practical", "strict"),
+}
+
+_CG_READINGS = {
+    "neutral at the aerodynamic centre": CG_POSITIONS,
+    "neutral at the pitch axis": {"forward": 0.23, "neutral": 0.25, "backward": 0.27},
+}
+
+
+@dataclass(frozen=True)
+class ForensicData:
+    """Verdicts of the paper's Fig. 8 picture under combinations of its open readings.
+
+    A combination reproduces the picture if, for each C.G. case, (1) every azimuth is stable in
+    hover, (2) at the first advance ratio with an azimuth where ``W' > 0`` (on the sphere of the
+    bound, or inside it where step 3 held) those azimuths lie on the retreating side only and
+    some azimuths stay free of it, and (3) at ``mu = 0.25`` such azimuths lie on both sides.
+
+    Attributes
+    ----------
+    factors : tuple of str
+        Names of the varied factors, in the order of each row's choices.
+    rows : tuple of tuple
+        Per combination, its choices.
+    hover_stable : numpy.ndarray
+        Per combination and case: every azimuth stable at ``mu = 0``, (c, k).
+    first_mu : numpy.ndarray
+        First advance ratio with an azimuth where ``W' > 0``, (c, k); NaN if none.
+    first_side : tuple of tuple of str
+        Where those azimuths lie at ``first_mu``: "retreating", "advancing", "both", "whole disc", "none".
+    last_side : tuple of tuple of str
+        The same at the largest advance ratio.
+    matches : numpy.ndarray
+        Per combination and case: the three points hold, (c, k).
+    mu_values : numpy.ndarray
+    n_psi : int
+    """
+
+    factors: tuple
+    rows: tuple
+    hover_stable: np.ndarray
+    first_mu: np.ndarray
+    first_side: tuple
+    last_side: tuple
+    matches: np.ndarray
+    mu_values: np.ndarray
+    n_psi: int
+
+    @property
+    def n_matching(self) -> np.ndarray:
+        """Cases for which each combination reproduces the picture, (c,)."""
+        return self.matches.sum(axis=1)
+
+    _LETTERS = {"retreating": "R", "advancing": "A", "both": "B", "whole disc": "W",
+                "no steady motion": "n", "tail/nose": "T", "none": "-"}
+
+    def code(self, c: int) -> str:
+        """Row ``c``'s first region, one entry per case: the advance ratio and where the azimuths
+        with ``W' > 0`` lie (R retreating side only, A advancing only, B both sides, W the whole
+        disc, n no steady motion found, - none up to the last advance ratio)."""
+        parts = []
+        for i, side in enumerate(self.first_side[c]):
+            mu = self.first_mu[c, i]
+            parts.append("-" if not np.isfinite(mu) else f"{mu:g}{self._LETTERS[side]}")
+        return " / ".join(parts)
+
+    def pivot_markdown(self, row_factors=("condition", "inflow"), column_factors=("delta3", "function")) -> str:
+        """The combinations that differ only in ``row_factors`` and ``column_factors`` from the
+        first row's other choices, as a table: one cell per combination, :meth:`code`."""
+        idx = {n: k for k, n in enumerate(self.factors)}
+        rest = [n for n in self.factors if n not in row_factors + column_factors]
+        base = self.rows[0]
+        cells, row_keys, col_keys = {}, [], []
+        for c, choice in enumerate(self.rows):
+            if any(choice[idx[n]] != base[idx[n]] for n in rest):
+                continue
+            rk = tuple(choice[idx[n]] for n in row_factors)
+            ck = tuple(choice[idx[n]] for n in column_factors)
+            row_keys += [rk] if rk not in row_keys else []
+            col_keys += [ck] if ck not in col_keys else []
+            cells[(rk, ck)] = self.code(c)
+        header = list(row_factors) + [", ".join(_short(v) for v in ck) for ck in col_keys]
+        rows = [[_short(v) for v in rk] + [cells.get((rk, ck), "") for ck in col_keys] for rk in row_keys]
+        return markdown_table(header, rows)
+
+    def others_markdown(self, row_factors=("condition", "inflow"), column_factors=("delta3", "function")) -> str:
+        """The combinations outside :meth:`pivot_markdown`: the factor changed from the first row,
+        the function, hover stable per case, and :meth:`code`."""
+        idx = {n: k for k, n in enumerate(self.factors)}
+        rest = [n for n in self.factors if n not in row_factors + column_factors]
+        base = self.rows[0]
+        rows = []
+        for c, choice in enumerate(self.rows):
+            changed = [n for n in rest if choice[idx[n]] != base[idx[n]]]
+            if not changed:
+                continue
+            what = "; ".join(f"{n.replace('_', ' ')}: {_short(choice[idx[n]])}" for n in changed)
+            hv = "/".join("yes" if h else "no" for h in self.hover_stable[c])
+            rows.append([what, _short(choice[idx["function"]]), hv, self.code(c)])
+        return markdown_table(["changed from the paper's reading", "function", "hover stable (F/N/B)",
+                               "first W' > 0 (F/N/B)"], rows)
+
+    def summary(self) -> str:
+        """Counts: combinations, hover stable for every case, picture for any and for every case."""
+        c = len(self.rows)
+        return (f"{c} combinations; hover stable at every azimuth for all three C.G.: "
+                f"{int(self.hover_stable.all(axis=1).sum())}; the picture for at least one C.G.: "
+                f"{int((self.n_matching > 0).sum())}, for all three: {int((self.n_matching == self.matches.shape[1]).sum())}")
+
+    def retreating_first(self) -> list:
+        """(row, case index) pairs whose first region lies on the retreating side only."""
+        return [(c, i) for c in range(len(self.rows)) for i in range(self.matches.shape[1])
+                if self.first_side[c][i] == "retreating"]
+
+    def facts(self) -> dict:
+        """The counts of :meth:`summary` and of (combination, case) pairs whose first region lies
+        on the retreating side only."""
+        rf = self.retreating_first()
+        return {
+            "ch8_forensic_cells": len(self.rows) * self.matches.shape[1],
+            "ch8_forensic_retreating": len(rf),
+            "ch8_forensic_retreating_mu": ", ".join(sorted({f"{self.first_mu[c, i]:g}" for c, i in rf})) or "-",
+            "ch8_forensic_n": len(self.rows),
+            "ch8_forensic_hover": int(self.hover_stable.all(axis=1).sum()),
+            "ch8_forensic_any": int((self.n_matching > 0).sum()),
+            "ch8_forensic_all": int((self.n_matching == self.matches.shape[1]).sum()),
+        }
+
+
+_SHORT = {
+    "paper: hover controls, hover angles": "paper: hover controls and angles",
+    "hover controls, periodic motion": "hover controls, periodic motion",
+    "cyclic trim (zero flapping), periodic motion": "cyclic trim, periodic motion",
+    "trimmed helicopter, periodic motion": "trimmed helicopter, periodic motion",
+    "neutral at the aerodynamic centre": "a.c.",
+    "neutral at the pitch axis": "neutral C.G. at the pitch axis",
+    -0.4: "tan d3 = -0.4", 0.4: "tan d3 = +0.4",
+}
+
+
+def _short(value) -> str:
+    return _SHORT.get(value, str(value))
+
+
+def _side(bad: np.ndarray, psi: np.ndarray) -> str:
+    """Where the flagged azimuths lie: advancing (0 < psi < 180 deg), retreating (180-360 deg)."""
+    if not bad.any():
+        return "none"
+    if bad.all():
+        return "whole disc"
+    s = np.sin(psi[bad])
+    adv, ret = bool((s > 1e-9).any()), bool((s < -1e-9).any())
+    if adv and ret:
+        return "both"
+    if ret:
+        return "retreating"
+    if adv:
+        return "advancing"
+    return "tail/nose"
+
+
+def _forensic_params(case: str, choice: dict) -> BladeParameters:
+    cg = _CG_READINGS[choice["cg_reading"]][case]
+    mass = float(choice["thrust"].split()[0])
+    over = dict(inflow_model=choice["inflow"], pitch_flap_coupling=float(choice["delta3"]), helicopter_mass=mass)
+    if choice["condition"].startswith("trimmed"):
+        return replace(BladeParameters.flight_case(case, **over), cg_position=cg, compressibility="none")
+    return replace(BladeParameters.table_i(case, **over), cg_position=cg)
+
+
+def _forensic_row(choice: dict, cases, mu_values, n_psi: int) -> tuple:
+    """Per case: hover stable, first mu, first side, last side, matches."""
+    out = []
+    for case in cases:
+        p = _forensic_params(case, choice)
+        lyap = quadratic_function if choice["function"] == "quadratic" else None
+        tests = PAPER_TEST_DISTURBANCES if choice["reading"] == "practical" else None
+        bad_rows, hover_ok = [], False
+        for mu in mu_values:
+            mu = float(mu)
+            cond = choice["condition"]
+            try:
+                if mu == 0.0 or cond.startswith("paper"):
+                    # the collective is left to the hover trim, whose equilibrium is kept
+                    # (a new one at the trimmed collective may lie on another branch)
+                    params, steady = p, None
+                else:
+                    target = {"hover": "none", "cyclic": "flapping", "trimmed": "propulsive"}[cond.split()[0]]
+                    tr = forward_flight_trim(p, mu, target)
+                    params, steady = tr.params, tabulate_motion(tr.motion, 1024)
+                r = blade_stability(params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi, test_disturbances=tests)
+            except (TrimError, NotAsymptoticallyStableError):
+                bad_rows.append(None)
+                continue
+            if mu == 0.0:
+                hover_ok = bool(np.all(r.stable))
+            cat = np.where(r.A > 0, np.where(r.stable, 0, 1), np.where(r.max_dW > r.tol, 3, 2))
+            bad_rows.append((cat == 1) | (cat == 3))
+            psi = np.asarray(r.psi)
+        first_mu, first_side = float("nan"), "none"
+        for mu, bad in zip(mu_values[1:], bad_rows[1:]):
+            if bad is None:
+                first_mu, first_side = float(mu), "no steady motion"
+                break
+            if bad.any():
+                first_mu, first_side = float(mu), _side(bad, psi)
+                break
+        last = bad_rows[-1]
+        last_side = "no steady motion" if last is None else _side(last, psi)
+        match = hover_ok and first_side == "retreating" and last_side == "both"
+        out.append((hover_ok, first_mu, first_side, last_side, match))
+    return tuple(out)
+
+
+def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: int = 36) -> ForensicData:
+    """Run the paper's picture test for each combination of :data:`FORENSIC_FACTORS` choices.
+
+    Parameters
+    ----------
+    combinations : iterable of dict, optional
+        Each a full choice ``{factor: value}``. Default: every combination of condition, inflow,
+        delta3 sign and function in the practical reading (the report's C.G. and thrust), then
+        one-at-a-time changes of C.G. reading, thrust and reading from the paper's own row.
+    cases, mu_values, n_psi
+        Cases, advance ratios (the first must be 0) and azimuths.
+    """
+    names = tuple(FORENSIC_FACTORS)
+    if combinations is None:
+        base = {n: v[0] for n, v in FORENSIC_FACTORS.items()}
+        combos = []
+        for cond, inflow, d3, fun in itertools.product(*(FORENSIC_FACTORS[n] for n in
+                                                          ("condition", "inflow", "delta3", "function"))):
+            combos.append({**base, "condition": cond, "inflow": inflow, "delta3": d3, "function": fun})
+        for name in ("cg_reading", "thrust", "reading"):
+            for value in FORENSIC_FACTORS[name][1:]:
+                for fun in FORENSIC_FACTORS["function"]:
+                    combos.append({**base, name: value, "function": fun})
+        combinations = combos
+    mu_values = np.asarray(mu_values, dtype=float)
+    if mu_values[0] != 0.0:
+        raise ValueError("mu_values must start with 0 (hover)")
+    rows, hover, first_mu, first_side, last_side, match = [], [], [], [], [], []
+    for choice in combinations:
+        res = _forensic_row(choice, cases, mu_values, n_psi)
+        rows.append(tuple(choice[n] for n in names))
+        hover.append([r[0] for r in res])
+        first_mu.append([r[1] for r in res])
+        first_side.append(tuple(r[2] for r in res))
+        last_side.append(tuple(r[3] for r in res))
+        match.append([r[4] for r in res])
+    return ForensicData(factors=names, rows=tuple(rows), hover_stable=np.array(hover, dtype=bool),
+                        first_mu=np.array(first_mu, dtype=float), first_side=tuple(first_side),
+                        last_side=tuple(last_side), matches=np.array(match, dtype=bool), mu_values=mu_values,
+                        n_psi=int(n_psi))
+
+
+# --------------------------------------------------------------------------------------
+# The Liapunov verdicts on the trimmed helicopter
+# --------------------------------------------------------------------------------------
+
+#: The candidates of :func:`verdict_data`: (label, function, reading).
+VERDICT_CANDIDATES = (
+    ("energy, practical", "energy", "practical"),
+    ("quadratic (Q = I), practical", "quadratic", "practical"),
+    ("quadratic (Q = I), strict", "quadratic", "strict"),
+)
+
+
+def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candidates=VERDICT_CANDIDATES) -> tuple:
+    """The engine's verdicts about the trimmed helicopter's periodic motion
+    (:meth:`BladeParameters.flight_case`, :func:`forward_flight_trim`), one
+    :class:`rotorlyap.figures.paper.RegionsData` per candidate (for
+    :func:`rotorlyap.figures.paper.figure_regions_plane`); where the linearised blade is unstable
+    no quadratic function exists and the cells are marked not stable (category 3).
+
+    Returns
+    -------
+    tuple of RegionsData
+    """
+    from .paper import RegionsData
+
+    mu_values = np.asarray(mu_values, dtype=float)
+    trims = {(case, float(mu)): forward_flight_trim(BladeParameters.flight_case(case), float(mu))
+             for case in cases for mu in mu_values}
+    # the trim's own state in hover too: past a fold of the hover branch (the backward C.G. with
+    # compressible sections) a new equilibrium at the trimmed collective is another, stable one
+    steadies = {key: (tr.steady if key[1] == 0.0 else tabulate_motion(tr.motion, 1024)) for key, tr in trims.items()}
+    out = []
+    psi = TWO_PI * np.arange(n_psi) / n_psi
+    for label, function, reading in candidates:
+        k, m = len(cases), mu_values.size
+        stable = np.zeros((k, m, n_psi), dtype=bool)
+        cat = np.full((k, m, n_psi), 3, dtype=int)
+        mdw = np.full((k, m, n_psi), np.nan)
+        aused = np.zeros((k, m))
+        lam = np.zeros((k, m, n_psi))
+        n_eval = 0
+        for i, case in enumerate(cases):
+            for j, mu in enumerate(mu_values):
+                tr = trims[(case, float(mu))]
+                try:
+                    r = blade_stability(tr.params, float(mu), steady=steadies[(case, float(mu))], n_psi=n_psi,
+                                        lyapunov=quadratic_function if function == "quadratic" else None,
+                                        test_disturbances=PAPER_TEST_DISTURBANCES if reading == "practical" else None)
+                except NotAsymptoticallyStableError:
+                    continue
+                stable[i, j] = r.stable
+                cat[i, j] = np.where(r.A > 0, np.where(r.stable, 0, 1), np.where(r.max_dW > r.tol, 3, 2))
+                mdw[i, j] = r.max_dW
+                aused[i, j] = r.A
+                lam[i, j] = r.lambda0
+                n_eval += r.n_evaluations
+        out.append(RegionsData(reading=reading, label=f"{label}", cases=tuple(cases), mu_values=mu_values, psi=psi,
+                               stable=stable, category=cat, max_dW=mdw, A_used=aused, lambda0=lam, A=1.0,
+                               root_r_over_R=BladeParameters.flight_case(cases[0]).root_r_over_R,
+                               n_evaluations=int(n_eval)))
+    return tuple(out)
+
+
+def verdict_summary(rows) -> str:
+    """Per candidate and case, the stable azimuths at each advance ratio."""
+    lines = []
+    for r in rows:
+        lines.append(f"{r.label}; mu: {_fmt(r.mu_values, 2)}")
+        for i, case in enumerate(r.cases):
+            lines.append(f"  {case:8s} stable azimuths of {r.psi.size}: {r.stable[i].sum(axis=1)}")
+    return "\n".join(lines)
+
+
+def verdict_facts(rows) -> dict:
+    """Stable cells per candidate (``ch8_v<k>_stable``) and the cells (``ch8_v_cells``)."""
+    out = {f"ch8_v{c}_stable": int(r.stable.sum()) for c, r in enumerate(rows)}
+    out["ch8_v_cells"] = int(rows[0].stable.size)
+    for c, r in enumerate(rows):
+        fw = r.stable[:, r.mu_values > 0]
+        out[f"ch8_v{c}_fw_stable"] = int(fw.sum())
+        out[f"ch8_v{c}_hover_stable"] = int(r.stable[:, r.mu_values == 0].sum())
+    out["ch8_v_hover_cells"] = int(rows[0].stable[:, rows[0].mu_values == 0].size)
+    return out
