@@ -137,8 +137,8 @@ CODE_SHARE_LIMIT = 0.25
 """Largest share of a chapter's source characters that is code: the chapters are prose with
 calls into the package (QuantEcon's lectures: 13-23 %)."""
 
-CODE_IS_THE_LESSON = {"08_your_own_blade.ipynb": 0.35}
-"""Chapters whose code a reader is meant to copy: chapter 8 shows the package's API on a
+CODE_IS_THE_LESSON = {"09_your_own_blade.ipynb": 0.35}
+"""Chapters whose code a reader is meant to copy: chapter 9 shows the package's API on a
 blade of the reader's own."""
 
 

@@ -10,7 +10,8 @@ figure.
 * :mod:`~rotorlyap.figures.blade_model`: chapters 3 and 4, the blade and Table I;
 * :mod:`~rotorlyap.figures.paper`: chapters 5 and 6, the paper's Figs 4-8;
 * :mod:`~rotorlyap.figures.validation`: chapter 7, beyond the paper;
-* :mod:`~rotorlyap.figures.your_blade`: chapter 8, your own blade;
+* :mod:`~rotorlyap.figures.flight`: chapter 8, the forward flight of a trimmed helicopter;
+* :mod:`~rotorlyap.figures.your_blade`: chapter 9, your own blade;
 * :mod:`~rotorlyap.figures.style` (shared colours), :mod:`~rotorlyap.figures.export` (CSV,
   glue, tables), :mod:`~rotorlyap.figures.commands` (the command line's figures).
 """

@@ -171,6 +171,8 @@ class TrimData:
             "ch8_growth_trim_max": f"{np.nanmax(self.growth_trimmed):.3f}",
             "ch8_growth_bw_paper25": f"{self.growth_paper[-1, j]:.3f}",
             "ch8_growth_bw_trim25": f"{self.growth_trimmed[-1, j]:.3f}",
+            "ch8_bw_stable_from": (f"{self.mu_values[np.argmax(self.growth_trimmed[-1] < 0)]:g}"
+                                   if (self.growth_trimmed[-1] < 0).any() else "never"),
         }
 
 
@@ -244,7 +246,7 @@ def figure_trim(data: TrimData, figsize=(12, 3.8)):
 
     style = [Line2D([], [], color="k", ls="--", marker="o", label="paper's condition"),
              Line2D([], [], color="k", ls="-", marker="s", label="trimmed helicopter")]
-    ax[2].legend(handles=style, fontsize=8, loc="lower right")
+    ax[2].legend(handles=style, fontsize=8, loc="upper center")
     fig.tight_layout()
     return fig
 
@@ -432,7 +434,8 @@ class ModelChoiceData:
         dcoll = self.collective_deg[inc] - self.collective_deg[pg]
         dlat = np.nanmax(self.lateral_cyclic_deg[:n_inflow], axis=0) - np.nanmin(self.lateral_cyclic_deg[:n_inflow], axis=0)
         return {
-            "ch8_inflow_spread": f"{np.nanmax(spread):.3f}",
+            # the largest change, or the rounding step it stays below
+            "ch8_inflow_spread": "0.001" if np.nanmax(spread) < 0.001 else f"{np.nanmax(spread):.3f}",
             "ch8_inflow_dlat": f"{np.nanmax(dlat):.1f}",
             "ch8_compr_bw_hover": f"{self.growth[pg, -1, 0]:.3f}",
             "ch8_incompr_bw_hover": f"{self.growth[inc, -1, 0]:.3f}",
@@ -490,9 +493,8 @@ class Delta3Data:
         The same for the trimmed helicopter at ``mu``, (2, k).
     mu : float
     flap_frequency_sq : numpy.ndarray
-        Square of the flap frequency with the pitch hinge locked at the control (the
-        coupling's spring ``K_theta tan(delta3)^2`` and its flap-pitch term), per rev^2, (2,),
-        forward C.G.
+        Classical flap frequency squared with the pitch following the coupling rigidly,
+        ``nu_beta^2 + (gamma/8) tan(delta3)``, per rev^2, (2,), forward C.G.
     """
 
     cases: tuple
@@ -513,7 +515,7 @@ class Delta3Data:
         for a, t in enumerate(self.couplings):
             lines.append(f"tan(delta3) = {t:+.1f}: hover {_fmt(self.growth[a], 3)} ({self.aft_trend(a)}), "
                          f"trimmed at mu = {self.mu:g} {_fmt(self.growth_trimmed[a], 3)}, "
-                         f"flap frequency^2 with pitch rigid {self.flap_frequency_sq[a]:.3f}")
+                         f"flap frequency^2 with the pitch following the coupling {self.flap_frequency_sq[a]:.3f}")
         return "\n".join(lines)
 
     def facts(self) -> dict:
@@ -527,14 +529,17 @@ class Delta3Data:
         return out
 
 
-def _locked_flap_frequency_sq(params: BladeParameters) -> float:
-    """Flap frequency squared in vacuum with lag and pitch held (their rows and columns of the
-    hover Jacobian removed): the stiffness the coupling adds to flap, per rev^2."""
-    p = replace(params, air_density=0.0, gravity=0.0, collective=0.0)
+def _effective_flap_frequency_sq(params: BladeParameters) -> float:
+    """The classical flap frequency squared with the pitch following the coupling rigidly,
+    ``nu_e^2 = nu_beta^2 + (gamma / 8) tan(delta3)`` per rev^2 [Johnson1980]: a flap angle
+    ``beta`` changes the pitch by ``-tan(delta3) beta``, whose lift adds ``(gamma/8) tan(delta3)``
+    to the flap stiffness (hover, hinge near the shaft, no inflow change). ``nu_beta^2`` is the
+    blade's own rotating flap frequency squared in vacuum, ``-dh_beta'/d beta`` of the model with
+    the coupling removed."""
+    p = replace(params, air_density=0.0, gravity=0.0, collective=0.0, pitch_flap_coupling=0.0)
     blade = Blade(p, 0.0)
-    z = blade.equilibrium()
-    J = blade.jacobian(0.0, z)
-    return float(-J[3, 0])
+    nu2 = float(-blade.jacobian(0.0, blade.equilibrium())[3, 0])
+    return nu2 + params.lock_number / 8.0 * params.pitch_flap_coupling
 
 
 def delta3_data(cases=CASES, couplings=(-0.4, 0.4), mu: float = 0.25) -> Delta3Data:
@@ -549,7 +554,7 @@ def delta3_data(cases=CASES, couplings=(-0.4, 0.4), mu: float = 0.25) -> Delta3D
             g[a, i] = _growth(BladeParameters.table_i(case, pitch_flap_coupling=float(t)), 0.0, None)
             tr = forward_flight_trim(BladeParameters.flight_case(case, pitch_flap_coupling=float(t)), mu)
             gt[a, i] = _growth(tr.params, mu, tr.motion)
-        nu2[a] = _locked_flap_frequency_sq(BladeParameters.table_i("forward", pitch_flap_coupling=float(t)))
+        nu2[a] = _effective_flap_frequency_sq(BladeParameters.table_i("forward", pitch_flap_coupling=float(t)))
     return Delta3Data(cases=tuple(cases), couplings=couplings, growth=g, growth_trimmed=gt, mu=float(mu),
                       flap_frequency_sq=nu2)
 
@@ -574,6 +579,9 @@ class PitchInertiaData:
         Largest real part of the hover eigenvalues, per rad, (n,).
     assumed : float
         The report's radius of gyration, fraction of chord.
+    reference : tuple of float
+        The Puma blade section's radius of gyration (:func:`puma_radius_of_gyration`), the
+        pitch inertia it gives this blade (kg m^2) and the growth rate there (per rad).
     """
 
     case: str
@@ -581,13 +589,16 @@ class PitchInertiaData:
     pitch_inertia: np.ndarray
     growth: np.ndarray
     assumed: float
+    reference: tuple
 
     def summary(self) -> str:
-        """Inertia (0.01 kg m^2) and growth rate (0.001 per rad) along the sweep."""
+        """Inertia (0.01 kg m^2) and growth rate (0.001 per rad) along the sweep, and at the
+        Puma section's radius of gyration."""
         return "\n".join([
             f"{self.case} C.G., hover; pitch radius of gyration / chord: {_fmt(self.radius_of_gyration, 2)}",
             f"  pitch inertia, kg m^2: {_fmt(self.pitch_inertia, 2)}",
             f"  growth rate, 1/rad:    {_fmt(self.growth, 3)}",
+            f"  Puma section k/c = {self.reference[0]:.3f}: {self.reference[1]:.2f} kg m^2, growth rate {self.reference[2]:.3f}",
         ])
 
     def facts(self) -> dict:
@@ -600,6 +611,9 @@ class PitchInertiaData:
             "ch8_pi_hi": f"{self.pitch_inertia[-1]:.2f}",
             "ch8_pi_growth_lo": f"{self.growth[0]:.3f}",
             "ch8_pi_growth_hi": f"{self.growth[-1]:.3f}",
+            "ch8_puma_k": f"{self.reference[0]:.2f}",
+            "ch8_puma_inertia": f"{self.reference[1]:.2f}",
+            "ch8_puma_growth": f"{self.reference[2]:.3f}",
         }
 
 
@@ -612,23 +626,26 @@ def pitch_inertia_data(case: str = "backward", radii=(0.12, 0.16, 0.2, 0.24, 0.2
         p = BladeParameters.table_i(case, pitch_radius_of_gyration=float(k))
         inertia[i] = float(mass_properties(p).inertia[0, 0])
         growth[i] = _growth(p, 0.0, None)
+    k_ref = puma_radius_of_gyration()
+    p_ref = BladeParameters.table_i(case, pitch_radius_of_gyration=k_ref)
+    ref = (k_ref, float(mass_properties(p_ref).inertia[0, 0]), _growth(p_ref, 0.0, None))
     return PitchInertiaData(case=case, radius_of_gyration=radii, pitch_inertia=inertia, growth=growth,
-                            assumed=BladeParameters().pitch_radius_of_gyration)
+                            assumed=BladeParameters().pitch_radius_of_gyration, reference=ref)
 
 
-def figure_pitch_inertia(data: PitchInertiaData, reference: dict | None = None, figsize=(6.4, 3.8)):
-    """The hover growth rate against the blade's pitch inertia; ``reference`` = {label: kg m^2}
-    marks published inertias of comparable blades. Returns the figure."""
+def figure_pitch_inertia(data: PitchInertiaData, figsize=(6.4, 3.8)):
+    """The hover growth rate against the blade's pitch inertia, with the report's assumption and
+    the Puma section's radius of gyration marked. Returns the figure."""
+    reference = {"Puma blade section": data.reference[1]}
     fig, ax = subplots(figsize=figsize)
     ax.plot(data.pitch_inertia, data.growth, "o-", color=CG_COLORS.get(data.case, "k"), label=f"{data.case} C.G., hover")
     i0 = int(np.argmin(np.abs(data.radius_of_gyration - data.assumed)))
     ax.plot(data.pitch_inertia[i0], data.growth[i0], "k*", ms=12, label="the report's assumption")
-    for lab, val in (reference or {}).items():
-        ax.axvline(val, color="0.5", ls="--", lw=1)
-        ax.text(val, ax.get_ylim()[1], " " + lab, rotation=90, va="top", ha="left", fontsize=8)
+    for lab, val in reference.items():
+        ax.axvline(val, color="0.5", ls="--", lw=1, label=lab)
     ax.axhline(0.0, color="k", lw=0.8)
     ax.set(xlabel=r"blade inertia about the pitch axis, kg m$^2$", ylabel="largest real part, 1/rad")
-    ax.legend(fontsize=8, loc="lower right")
+    ax.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
     return fig
 
@@ -915,18 +932,15 @@ VERDICT_CANDIDATES = (
 )
 
 
-def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candidates=VERDICT_CANDIDATES) -> tuple:
+def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candidates=VERDICT_CANDIDATES):
     """The engine's verdicts about the trimmed helicopter's periodic motion
-    (:meth:`BladeParameters.flight_case`, :func:`forward_flight_trim`), one
-    :class:`rotorlyap.figures.paper.RegionsData` per candidate (for
-    :func:`rotorlyap.figures.paper.figure_regions_plane`); where the linearised blade is unstable
-    no quadratic function exists and the cells are marked not stable (category 3).
-
-    Returns
-    -------
-    tuple of RegionsData
+    (:meth:`BladeParameters.flight_case`, :func:`forward_flight_trim`, its own state in hover),
+    as a :class:`rotorlyap.figures.validation.ScanData` (for
+    :func:`rotorlyap.figures.validation.figure_scan`): categories of
+    :data:`rotorlyap.figures.validation.SCAN_CATEGORY_NAMES`, 4 where the linearised blade is
+    unstable and no quadratic function exists.
     """
-    from .paper import RegionsData
+    from .validation import ScanData
 
     mu_values = np.asarray(mu_values, dtype=float)
     trims = {(case, float(mu)): forward_flight_trim(BladeParameters.flight_case(case), float(mu))
@@ -934,55 +948,65 @@ def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candida
     # the trim's own state in hover too: past a fold of the hover branch (the backward C.G. with
     # compressible sections) a new equilibrium at the trimmed collective is another, stable one
     steadies = {key: (tr.steady if key[1] == 0.0 else tabulate_motion(tr.motion, 1024)) for key, tr in trims.items()}
-    out = []
     psi = TWO_PI * np.arange(n_psi) / n_psi
-    for label, function, reading in candidates:
-        k, m = len(cases), mu_values.size
-        stable = np.zeros((k, m, n_psi), dtype=bool)
-        cat = np.full((k, m, n_psi), 3, dtype=int)
-        mdw = np.full((k, m, n_psi), np.nan)
-        aused = np.zeros((k, m))
-        lam = np.zeros((k, m, n_psi))
-        n_eval = 0
+    shape = (len(candidates), len(cases), mu_values.size, n_psi)
+    cat = np.zeros(shape, dtype=int)
+    stable = np.zeros(shape, dtype=bool)
+    lam = np.zeros(shape)
+    aused = np.full(shape[:3], np.nan)
+    astep3 = np.full(shape[:3], np.nan)
+    msgs = []
+    for c, (_, function, reading) in enumerate(candidates):
+        per_case = []
         for i, case in enumerate(cases):
+            row = []
             for j, mu in enumerate(mu_values):
                 tr = trims[(case, float(mu))]
                 try:
                     r = blade_stability(tr.params, float(mu), steady=steadies[(case, float(mu))], n_psi=n_psi,
                                         lyapunov=quadratic_function if function == "quadratic" else None,
                                         test_disturbances=PAPER_TEST_DISTURBANCES if reading == "practical" else None)
-                except NotAsymptoticallyStableError:
+                except NotAsymptoticallyStableError as exc:
+                    cat[c, i, j] = 4
+                    row.append(str(exc))
                     continue
-                stable[i, j] = r.stable
-                cat[i, j] = np.where(r.A > 0, np.where(r.stable, 0, 1), np.where(r.max_dW > r.tol, 3, 2))
-                mdw[i, j] = r.max_dW
-                aused[i, j] = r.A
-                lam[i, j] = r.lambda0
-                n_eval += r.n_evaluations
-        out.append(RegionsData(reading=reading, label=f"{label}", cases=tuple(cases), mu_values=mu_values, psi=psi,
-                               stable=stable, category=cat, max_dW=mdw, A_used=aused, lambda0=lam, A=1.0,
-                               root_r_over_R=BladeParameters.flight_case(cases[0]).root_r_over_R,
-                               n_evaluations=int(n_eval)))
-    return tuple(out)
+                stable[c, i, j] = r.stable
+                cat[c, i, j] = np.where(r.A > 0, np.where(r.stable, 0, 1), np.where(r.max_dW > r.tol, 3, 2))
+                lam[c, i, j] = r.lambda0
+                aused[c, i, j] = r.A
+                astep3[c, i, j] = r.A_step3
+                row.append(r.message)
+            per_case.append(tuple(row))
+        msgs.append(tuple(per_case))
+    return ScanData(cases=tuple(cases), mu_values=mu_values, psi=psi,
+                    keys=tuple(f"{f}_{r}" for _, f, r in candidates), labels=tuple(lab for lab, _, _ in candidates),
+                    readings=tuple(r for _, _, r in candidates), category=cat, stable=stable, lambda0=lam,
+                    A_used=aused, A_step3=astep3, weights=np.full((len(cases), 6), np.nan), messages=tuple(msgs))
 
 
-def verdict_summary(rows) -> str:
-    """Per candidate and case, the stable azimuths at each advance ratio."""
+def verdict_summary(scan) -> str:
+    """Per candidate and case, the stable azimuths at each advance ratio, and the cells without
+    a quadratic function."""
     lines = []
-    for r in rows:
-        lines.append(f"{r.label}; mu: {_fmt(r.mu_values, 2)}")
-        for i, case in enumerate(r.cases):
-            lines.append(f"  {case:8s} stable azimuths of {r.psi.size}: {r.stable[i].sum(axis=1)}")
+    for c, label in enumerate(scan.labels):
+        lines.append(f"{label}; mu: {_fmt(scan.mu_values, 2)}")
+        for i, case in enumerate(scan.cases):
+            none = int((scan.category[c, i] == 4).all(axis=1).sum())
+            lines.append(f"  {case:8s} stable azimuths of {scan.psi.size}: {scan.stable[c, i].sum(axis=1)}"
+                         + (f"  (no quadratic function at {none} advance ratios)" if none else ""))
     return "\n".join(lines)
 
 
-def verdict_facts(rows) -> dict:
-    """Stable cells per candidate (``ch8_v<k>_stable``) and the cells (``ch8_v_cells``)."""
-    out = {f"ch8_v{c}_stable": int(r.stable.sum()) for c, r in enumerate(rows)}
-    out["ch8_v_cells"] = int(rows[0].stable.size)
-    for c, r in enumerate(rows):
-        fw = r.stable[:, r.mu_values > 0]
-        out[f"ch8_v{c}_fw_stable"] = int(fw.sum())
-        out[f"ch8_v{c}_hover_stable"] = int(r.stable[:, r.mu_values == 0].sum())
-    out["ch8_v_hover_cells"] = int(rows[0].stable[:, rows[0].mu_values == 0].size)
+def verdict_facts(scan) -> dict:
+    """Stable cells per candidate in forward flight (``ch8_v<k>_fw_stable``), and per case the
+    largest advance ratio up to which the last candidate (the strict one) holds at every azimuth
+    (``ch8_v_strict_upto_<case>``) and its forward-flight cells (``ch8_v_strict_fw_<case>``)."""
+    fw = scan.mu_values > 0
+    out = {f"ch8_v{c}_fw_stable": int(scan.stable[c][:, fw].sum()) for c in range(len(scan.labels))}
+    strict = scan.stable[-1]
+    for i, case in enumerate(scan.cases):
+        whole = np.logical_and.accumulate(strict[i].all(axis=1))
+        upto = scan.mu_values[whole]
+        out[f"ch8_v_strict_upto_{case}"] = f"{upto[-1]:g}" if upto.size else "none"
+        out[f"ch8_v_strict_fw_{case}"] = int(strict[i][fw].sum())
     return out
