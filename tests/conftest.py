@@ -31,3 +31,21 @@ def forward_hover(forward) -> Blade:
 def forward_periodic_015(forward) -> TabulatedMotion:
     """The forward-C.G. blade's periodic motion at mu = 0.15 (256 collocation points), tabulated."""
     return tabulate_motion(periodic_motion(forward, 0.15, n_points=256))
+
+
+@pytest.fixture
+def kernel_pair(monkeypatch):
+    """A function ``pair(params, mu)`` giving the same blade twice: with the compiled kernels and
+    with the numpy kernels (``ROTORLYAP_KERNEL``), the environment restored afterwards."""
+
+    def pair(params: BladeParameters, mu: float) -> tuple[Blade, Blade]:
+        monkeypatch.setenv("ROTORLYAP_KERNEL", "compiled")
+        fast = Blade(params, mu)
+        monkeypatch.setenv("ROTORLYAP_KERNEL", "numpy")
+        slow = Blade(params, mu)
+        monkeypatch.delenv("ROTORLYAP_KERNEL")
+        assert fast.kernel is not None and slow.kernel is None
+        return fast, slow
+
+    return pair
+

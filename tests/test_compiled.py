@@ -25,17 +25,6 @@ pytestmark = pytest.mark.skipif(not numba_available(), reason="numba is not inst
 RTOL = 1e-13
 
 
-def _pair(monkeypatch, params, mu):
-    """The same blade twice: compiled kernels and numpy kernels."""
-    monkeypatch.setenv("ROTORLYAP_KERNEL", "compiled")
-    fast = Blade(params, mu)
-    monkeypatch.setenv("ROTORLYAP_KERNEL", "numpy")
-    slow = Blade(params, mu)
-    monkeypatch.delenv("ROTORLYAP_KERNEL")
-    assert fast.kernel is not None and slow.kernel is None
-    return fast, slow
-
-
 def _states(rng, n, spread):
     """Disturbed states about a typical hover trim, and azimuths over the whole circle."""
     z = np.array([0.05, 0.02, 0.1, 0.0, 0.0, 0.0]) + rng.normal(scale=spread, size=(n, 6))
@@ -60,11 +49,11 @@ CASES = [
 
 
 @pytest.mark.parametrize("label, changes, mu", CASES, ids=[c[0] for c in CASES])
-def test_rhs_equals_numpy_path(monkeypatch, label, changes, mu):
+def test_rhs_equals_numpy_path(kernel_pair, label, changes, mu):
     """h(psi, z) of the compiled kernel equals the numpy path to 1e-13 relative, small and large
     disturbances (large ones reach reverse flow and stall: every branch of the airfoil table)."""
     base = BladeParameters.table_i("backward" if "backward" in label else "forward")
-    fast, slow = _pair(monkeypatch, replace(base, **changes), mu)
+    fast, slow = kernel_pair(replace(base, **changes), mu)
     rng = np.random.default_rng(1)
     for spread in (0.01, 0.5, 3.0):
         psi, z = _states(rng, 2000, spread)
@@ -77,24 +66,24 @@ def test_rhs_equals_numpy_path(monkeypatch, label, changes, mu):
     _close(fast.rhs(psi.reshape(3, 4), z.reshape(3, 4, 6)).reshape(-1, 6), slow.rhs(psi, z))
 
 
-def test_potential_terms_equal_numpy_path(monkeypatch):
+def test_potential_terms_equal_numpy_path(kernel_pair):
     """The effective potential and its derivatives (14 rows) agree with the numpy path."""
     params = replace(BladeParameters.table_i("neutral"), cyclic_cos=0.03, cyclic_sin=0.01)
-    fast, slow = _pair(monkeypatch, params, 0.2)
+    fast, slow = kernel_pair(params, 0.2)
     rng = np.random.default_rng(2)
     psi, z = _states(rng, 500, 0.3)
     _close(fast.potential_terms(psi, z[:, :3].T).T, slow.potential_terms(psi, z[:, :3].T).T)
 
 
 @pytest.mark.parametrize("steady", ["hover", "cyclic", "periodic"])
-def test_energy_rate_equals_numpy_path(monkeypatch, steady):
+def test_energy_rate_equals_numpy_path(kernel_pair, steady):
     """W' of the energy function agrees with the numpy path: about the hover equilibrium, about a
     constant state with cyclic pitch (psi-dependent control), and about a periodic motion."""
     params = BladeParameters.table_i("forward")
     if steady == "cyclic":
         params = replace(params, cyclic_cos=0.02, cyclic_sin=-0.04, collective=0.15)
     mu = 0.0 if steady == "hover" else 0.15
-    fast, slow = _pair(monkeypatch, params, mu)
+    fast, slow = kernel_pair(params, mu)
     if steady == "periodic":
         xi = tabulate_motion(periodic_motion(params, mu, n_points=32))
     else:

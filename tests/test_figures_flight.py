@@ -23,7 +23,7 @@ def test_trim_data_puts_the_trimmed_rotor_at_the_weight_and_the_paper_above_it()
     assert td.paper_lift_ratio[0, 1] > 1.4
     assert td.shaft_tilt_deg[0, 1] > 0.0
     assert td.retreating_alpha_deg[1, 1] < td.retreating_alpha_deg[0, 1]
-    assert set(td.facts()) >= {"ch8_paper_lw_max", "ch8_bw_stable_from"}
+    assert set(td.facts()) >= {"ch8_paper_lw_fw_hi", "ch8_bw_stable_from"}
 
 
 def test_disc_data_marks_reverse_flow_inside_the_reverse_flow_circle():

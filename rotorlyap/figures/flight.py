@@ -37,6 +37,7 @@ from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.steady import tabulate_motion
 from .export import markdown_table
 from .style import CG_COLORS, subplots
+from .validation import _category  # the verdict categories of chapter 7's scans
 
 __all__ = [
     "CASES", "MU_TRIM", "MU_FORENSIC", "INFLOW_CHOICES", "PUMA_SECTION", "puma_radius_of_gyration",
@@ -74,11 +75,10 @@ def puma_radius_of_gyration() -> float:
     return math.sqrt(s["torsional_inertia_per_length"] / s["mass_per_length"]) / s["chord"]
 
 
-def _growth(params: BladeParameters, mu: float, motion) -> float:
-    """Largest real part of the Floquet exponents about ``motion`` (a PeriodicMotion or None
-    for hover), per rad of azimuth."""
-    steady = "periodic" if motion is None else motion
-    return float(blade_floquet(params, mu, steady=steady).exponents.real.max())
+def _growth(params: BladeParameters, mu: float, steady) -> float:
+    """Largest real part of the Floquet exponents about ``steady`` (a steady motion, or None for
+    the hover trim of ``params``), per rad of azimuth."""
+    return float(blade_floquet(params, mu, steady="periodic" if steady is None else steady).exponents.real.max())
 
 
 def _lift_ratio_or_nan(params: BladeParameters, mu: float, target: str) -> tuple[float, object]:
@@ -120,6 +120,8 @@ class TrimData:
         Largest Floquet real part about the paper's condition's periodic motion, per rad, (k, m).
     growth_trimmed : numpy.ndarray
         The same about the trimmed helicopter's periodic motion, (k, m).
+    growth_trimmed_incompressible : numpy.ndarray
+        The same with the paper's incompressible sections (the trim alone changed), (k, m).
     retreating_alpha_deg : numpy.ndarray
         Mean angle of attack of the outer 10 % of the span at psi = 270 deg, deg, (2, m):
         paper's condition, trimmed (forward C.G.).
@@ -133,6 +135,7 @@ class TrimData:
     paper_lift_ratio: np.ndarray
     growth_paper: np.ndarray
     growth_trimmed: np.ndarray
+    growth_trimmed_incompressible: np.ndarray
     retreating_alpha_deg: np.ndarray
 
     def summary(self) -> str:
@@ -149,6 +152,7 @@ class TrimData:
                 f"  trimmed shaft tilt, deg:          {_fmt(self.shaft_tilt_deg[i], 2)}",
                 f"  growth rate, paper's condition:   {_fmt(self.growth_paper[i], 3)}",
                 f"  growth rate, trimmed:             {_fmt(self.growth_trimmed[i], 3)}",
+                f"  growth rate, trimmed, incompr.:   {_fmt(self.growth_trimmed_incompressible[i], 3)}",
             ]
         lines.append(f"forward C.G., outboard angle of attack at psi = 270 deg, deg: paper's "
                      f"{_fmt(self.retreating_alpha_deg[0], 1)}, trimmed {_fmt(self.retreating_alpha_deg[1], 1)}")
@@ -158,14 +162,25 @@ class TrimData:
         """The numbers the chapter quotes."""
         j = int(np.argmin(np.abs(self.mu_values - 0.25)))
         k = int(np.argmin(np.abs(self.mu_values - 0.15)))
-        ratios = self.paper_lift_ratio[:, 1:]
+        fw = self.paper_lift_ratio[0, 1:]
+        bw = self.paper_lift_ratio[-1]
+        jb = int(np.nanargmax(bw))
+        gi = self.growth_trimmed_incompressible
+        neu = self.cases.index("neutral") if "neutral" in self.cases else 0
         return {
-            "ch8_paper_lw_max": f"{np.nanmax(ratios):.2f}",
+            "ch8_paper_lw_fw_lo": f"{np.nanmin(fw):.2f}",
+            "ch8_paper_lw_fw_hi": f"{np.nanmax(fw):.2f}",
             "ch8_paper_lw_fw15": f"{self.paper_lift_ratio[0, k]:.2f}",
+            "ch8_paper_lw_bw_max": f"{bw[jb]:.2f}",
+            "ch8_paper_lw_bw_mu": f"{self.mu_values[jb]:g}",
+            "ch8_paper_growth_bw_at_max": f"{self.growth_paper[-1, jb]:+.3f}",
+            "ch8_incompr_trim_bw_at_max": f"{gi[-1, jb]:.3f}",
+            "ch8_incompr_trim_neu_at_max": f"{gi[neu, jb]:.3f}",
+            "ch8_paper_neu_at_max": f"{self.growth_paper[neu, jb]:.3f}",
             "ch8_tilt25": f"{self.shaft_tilt_deg[0, j]:.1f}",
             "ch8_coll25": f"{self.controls_deg[0, j, 0]:.1f}",
             "ch8_coll0": f"{self.controls_deg[0, 0, 0]:.1f}",
-            "ch8_b1s25": f"{self.controls_deg[0, j, 2]:.1f}",
+            "ch8_theta1s25": f"{self.controls_deg[0, j, 2]:.1f}",
             "ch8_alpha270_paper": f"{self.retreating_alpha_deg[0, j]:.1f}",
             "ch8_alpha270_trim": f"{self.retreating_alpha_deg[1, j]:.1f}",
             "ch8_growth_trim_max": f"{np.nanmax(self.growth_trimmed):.3f}",
@@ -196,6 +211,7 @@ def trim_data(cases=CASES, mu_values=MU_TRIM) -> TrimData:
     ratio = np.full((k, m), np.nan)
     g_paper = np.full((k, m), np.nan)
     g_trim = np.full((k, m), np.nan)
+    g_inc = np.full((k, m), np.nan)
     a270 = np.full((2, m), np.nan)
     for i, case in enumerate(cases):
         for j, mu in enumerate(mu_values):
@@ -203,17 +219,19 @@ def trim_data(cases=CASES, mu_values=MU_TRIM) -> TrimData:
             ctrl[i, j] = tr.controls_deg
             tilt[i, j] = math.degrees(tr.shaft_tilt)
             lam[i, j] = tr.induced_inflow
-            g_trim[i, j] = _growth(tr.params, float(mu), tr.motion)
+            g_trim[i, j] = _growth(tr.params, float(mu), tr.steady)
+            inc = forward_flight_trim(BladeParameters.flight_case(case, compressibility="none"), float(mu))
+            g_inc[i, j] = _growth(inc.params, float(mu), inc.steady)
             ratio[i, j], paper = _lift_ratio_or_nan(BladeParameters.table_i(case), float(mu), "none")
             if paper is not None:
-                g_paper[i, j] = _growth(paper.params, float(mu), paper.motion)
+                g_paper[i, j] = _growth(paper.params, float(mu), paper.steady)
             if i == 0 and mu > 0:
                 a270[1, j] = _outboard_alpha_270(tr.params, float(mu), tr.motion)
                 if paper is not None:
                     a270[0, j] = _outboard_alpha_270(paper.params, float(mu), paper.motion)
     return TrimData(cases=tuple(cases), mu_values=mu_values, controls_deg=ctrl, shaft_tilt_deg=tilt,
                     induced_inflow=lam, paper_lift_ratio=ratio, growth_paper=g_paper, growth_trimmed=g_trim,
-                    retreating_alpha_deg=a270)
+                    growth_trimmed_incompressible=g_inc, retreating_alpha_deg=a270)
 
 
 def figure_trim(data: TrimData, figsize=(12, 3.8)):
@@ -224,8 +242,9 @@ def figure_trim(data: TrimData, figsize=(12, 3.8)):
     for i, case in enumerate(data.cases):
         c = CG_COLORS[case]
         ax[0].plot(mu, data.paper_lift_ratio[i], "o-", color=c, label=f"{case} C.G.")
-        ax[2].plot(mu, data.growth_paper[i], "o--", color=c, label=f"{case}, paper's condition")
-        ax[2].plot(mu, data.growth_trimmed[i], "s-", color=c, label=f"{case}, trimmed")
+        ax[2].plot(mu, data.growth_paper[i], "o--", color=c)
+        ax[2].plot(mu, data.growth_trimmed_incompressible[i], "^:", color=c)
+        ax[2].plot(mu, data.growth_trimmed[i], "s-", color=c)
     ax[0].axhline(1.0, color="k", lw=0.8)
     ax[0].text(mu[-1], 1.02, "trimmed: 1", ha="right", va="bottom", fontsize=8)
     ax[0].set(xlabel=r"advance ratio $\mu$", ylabel="vertical rotor force / weight",
@@ -245,7 +264,8 @@ def figure_trim(data: TrimData, figsize=(12, 3.8)):
     from matplotlib.lines import Line2D
 
     style = [Line2D([], [], color="k", ls="--", marker="o", label="paper's condition"),
-             Line2D([], [], color="k", ls="-", marker="s", label="trimmed helicopter")]
+             Line2D([], [], color="k", ls=":", marker="^", label="trimmed, incompressible"),
+             Line2D([], [], color="k", ls="-", marker="s", label="trimmed, compressible")]
     ax[2].legend(handles=style, fontsize=8, loc="upper center")
     fig.tight_layout()
     return fig
@@ -433,7 +453,10 @@ class ModelChoiceData:
         inc = len(self.variants) - 1
         dcoll = self.collective_deg[inc] - self.collective_deg[pg]
         dlat = np.nanmax(self.lateral_cyclic_deg[:n_inflow], axis=0) - np.nanmin(self.lateral_cyclic_deg[:n_inflow], axis=0)
+        jl = int(np.nanargmax(dlat))
         return {
+            "ch8_inflow_dlat_mu": f"{self.mu_values[jl]:g}",
+            "ch8_inflow_dlat_last": f"{dlat[-1]:.2f}",
             # the largest change, or the rounding step it stays below
             "ch8_inflow_spread": "0.001" if np.nanmax(spread) < 0.001 else f"{np.nanmax(spread):.3f}",
             "ch8_inflow_dlat": f"{np.nanmax(dlat):.1f}",
@@ -465,7 +488,7 @@ def model_choice_data(cases=CASES, mu_values=(0.0, 0.05, 0.1, 0.15, 0.2, 0.25)) 
                 p = BladeParameters.flight_case(case, **over)
                 tr = forward_flight_trim(p, float(mu))
                 coll[a, i, j] = tr.controls_deg[0]
-                growth[a, i, j] = _growth(tr.params, float(mu), tr.motion)
+                growth[a, i, j] = _growth(tr.params, float(mu), tr.steady)
                 if i == 0:
                     lat[a, j] = tr.controls_deg[1]
                     kx[a, j] = kx_factor(p.inflow_model, float(mu), tr.induced_inflow + mu * math.tan(tr.shaft_tilt))
@@ -553,7 +576,7 @@ def delta3_data(cases=CASES, couplings=(-0.4, 0.4), mu: float = 0.25) -> Delta3D
         for i, case in enumerate(cases):
             g[a, i] = _growth(BladeParameters.table_i(case, pitch_flap_coupling=float(t)), 0.0, None)
             tr = forward_flight_trim(BladeParameters.flight_case(case, pitch_flap_coupling=float(t)), mu)
-            gt[a, i] = _growth(tr.params, mu, tr.motion)
+            gt[a, i] = _growth(tr.params, mu, tr.steady)
         nu2[a] = _effective_flap_frequency_sq(BladeParameters.table_i("forward", pitch_flap_coupling=float(t)))
     return Delta3Data(cases=tuple(cases), couplings=couplings, growth=g, growth_trimmed=gt, mu=float(mu),
                       flap_frequency_sq=nu2)
@@ -576,7 +599,10 @@ class PitchInertiaData:
     pitch_inertia : numpy.ndarray
         Blade inertia about the pitch axis, kg m^2, (n,).
     growth : numpy.ndarray
-        Largest real part of the hover eigenvalues, per rad, (n,).
+        Largest real part of the hover eigenvalues, per rad, (n,): the paper's incompressible
+        sections (:meth:`BladeParameters.table_i`).
+    growth_compressible : numpy.ndarray
+        The same with the report's forward-flight model (:meth:`BladeParameters.flight_case`), (n,).
     assumed : float
         The report's radius of gyration, fraction of chord.
     reference : tuple of float
@@ -588,6 +614,7 @@ class PitchInertiaData:
     radius_of_gyration: np.ndarray
     pitch_inertia: np.ndarray
     growth: np.ndarray
+    growth_compressible: np.ndarray
     assumed: float
     reference: tuple
 
@@ -598,6 +625,7 @@ class PitchInertiaData:
             f"{self.case} C.G., hover; pitch radius of gyration / chord: {_fmt(self.radius_of_gyration, 2)}",
             f"  pitch inertia, kg m^2: {_fmt(self.pitch_inertia, 2)}",
             f"  growth rate, 1/rad:    {_fmt(self.growth, 3)}",
+            f"  compressible sections: {_fmt(self.growth_compressible, 3)}",
             f"  Puma section k/c = {self.reference[0]:.3f}: {self.reference[1]:.2f} kg m^2, growth rate {self.reference[2]:.3f}",
         ])
 
@@ -614,23 +642,33 @@ class PitchInertiaData:
             "ch8_puma_k": f"{self.reference[0]:.2f}",
             "ch8_puma_inertia": f"{self.reference[1]:.2f}",
             "ch8_puma_growth": f"{self.reference[2]:.3f}",
+            "ch8_pi_compr_max": f"{np.nanmax(self.growth_compressible):.3f}",
+            "ch8_pi_compr_min": f"{np.nanmin(self.growth_compressible):.3f}",
+            "ch8_pi_factor_hi": f"{self.pitch_inertia[-1] / self.pitch_inertia[i0]:.0f}",
         }
 
 
-def pitch_inertia_data(case: str = "backward", radii=(0.12, 0.16, 0.2, 0.24, 0.28, 0.32, 0.36)) -> PitchInertiaData:
-    """Sweep ``pitch_radius_of_gyration`` in hover (:meth:`BladeParameters.table_i`)."""
+def pitch_inertia_data(case: str = "backward",
+                       radii=(0.12, 0.16, 0.2, 0.24, 0.28, 0.32, 0.4, 0.5, 0.64)) -> PitchInertiaData:
+    """Sweep ``pitch_radius_of_gyration`` in hover, with the paper's sections
+    (:meth:`BladeParameters.table_i`) and the report's forward-flight model
+    (:meth:`BladeParameters.flight_case`). The largest radii stand for a heavy cuff or pitch
+    horn, which add pitch inertia the section does not carry."""
     radii = np.asarray(radii, dtype=float)
     inertia = np.empty(radii.size)
     growth = np.empty(radii.size)
+    growth_c = np.empty(radii.size)
     for i, k in enumerate(radii):
         p = BladeParameters.table_i(case, pitch_radius_of_gyration=float(k))
         inertia[i] = float(mass_properties(p).inertia[0, 0])
         growth[i] = _growth(p, 0.0, None)
+        growth_c[i] = _growth(BladeParameters.flight_case(case, pitch_radius_of_gyration=float(k)), 0.0, None)
     k_ref = puma_radius_of_gyration()
     p_ref = BladeParameters.table_i(case, pitch_radius_of_gyration=k_ref)
     ref = (k_ref, float(mass_properties(p_ref).inertia[0, 0]), _growth(p_ref, 0.0, None))
     return PitchInertiaData(case=case, radius_of_gyration=radii, pitch_inertia=inertia, growth=growth,
-                            assumed=BladeParameters().pitch_radius_of_gyration, reference=ref)
+                            growth_compressible=growth_c, assumed=BladeParameters().pitch_radius_of_gyration,
+                            reference=ref)
 
 
 def figure_pitch_inertia(data: PitchInertiaData, figsize=(6.4, 3.8)):
@@ -638,7 +676,9 @@ def figure_pitch_inertia(data: PitchInertiaData, figsize=(6.4, 3.8)):
     the Puma section's radius of gyration marked. Returns the figure."""
     reference = {"Puma blade section": data.reference[1]}
     fig, ax = subplots(figsize=figsize)
-    ax.plot(data.pitch_inertia, data.growth, "o-", color=CG_COLORS.get(data.case, "k"), label=f"{data.case} C.G., hover")
+    c = CG_COLORS.get(data.case, "k")
+    ax.plot(data.pitch_inertia, data.growth, "o-", color=c, label=f"{data.case} C.G., hover, incompressible")
+    ax.plot(data.pitch_inertia, data.growth_compressible, "s:", color=c, label=f"{data.case} C.G., hover, compressible")
     i0 = int(np.argmin(np.abs(data.radius_of_gyration - data.assumed)))
     ax.plot(data.pitch_inertia[i0], data.growth[i0], "k*", ms=12, label="the report's assumption")
     for lab, val in reference.items():
@@ -718,12 +758,13 @@ class ForensicData:
         return self.matches.sum(axis=1)
 
     _LETTERS = {"retreating": "R", "advancing": "A", "both": "B", "whole disc": "W",
-                "no steady motion": "n", "tail/nose": "T", "none": "-"}
+                "no steady motion": "n", "no quadratic function": "q", "tail/nose": "T", "none": "-"}
 
     def code(self, c: int) -> str:
         """Row ``c``'s first region, one entry per case: the advance ratio and where the azimuths
         with ``W' > 0`` lie (R retreating side only, A advancing only, B both sides, W the whole
-        disc, n no steady motion found, - none up to the last advance ratio)."""
+        disc, n no steady motion found, q no quadratic function (linearised blade unstable), - none
+        up to the last advance ratio)."""
         parts = []
         for i, side in enumerate(self.first_side[c]):
             mu = self.first_mu[c, i]
@@ -762,8 +803,8 @@ class ForensicData:
                 continue
             what = "; ".join(f"{n.replace('_', ' ')}: {_short(choice[idx[n]])}" for n in changed)
             hv = "/".join("yes" if h else "no" for h in self.hover_stable[c])
-            rows.append([what, _short(choice[idx["function"]]), hv, self.code(c)])
-        return markdown_table(["changed from the paper's reading", "function", "hover stable (F/N/B)",
+            rows.append([_short(choice[idx["condition"]]), what, _short(choice[idx["function"]]), hv, self.code(c)])
+        return markdown_table(["condition", "changed", "function", "hover stable (F/N/B)",
                                "first W' > 0 (F/N/B)"], rows)
 
     def summary(self) -> str:
@@ -826,6 +867,8 @@ def _side(bad: np.ndarray, psi: np.ndarray) -> str:
 
 
 def _forensic_params(case: str, choice: dict) -> BladeParameters:
+    """The blade of one forensic choice: the paper's incompressible sections in every condition
+    (compressibility is not among the readings the paper leaves open)."""
     cg = _CG_READINGS[choice["cg_reading"]][case]
     mass = float(choice["thrust"].split()[0])
     over = dict(inflow_model=choice["inflow"], pitch_flap_coupling=float(choice["delta3"]), helicopter_mass=mass)
@@ -842,6 +885,7 @@ def _forensic_row(choice: dict, cases, mu_values, n_psi: int) -> tuple:
         lyap = quadratic_function if choice["function"] == "quadratic" else None
         tests = PAPER_TEST_DISTURBANCES if choice["reading"] == "practical" else None
         bad_rows, hover_ok = [], False
+        psi = TWO_PI * np.arange(n_psi) / n_psi
         for mu in mu_values:
             mu = float(mu)
             cond = choice["condition"]
@@ -855,24 +899,27 @@ def _forensic_row(choice: dict, cases, mu_values, n_psi: int) -> tuple:
                     tr = forward_flight_trim(p, mu, target)
                     params, steady = tr.params, tabulate_motion(tr.motion, 1024)
                 r = blade_stability(params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi, test_disturbances=tests)
-            except (TrimError, NotAsymptoticallyStableError):
+            except TrimError:
                 bad_rows.append(None)
+                continue
+            except NotAsymptoticallyStableError:
+                bad_rows.append("no quadratic function")
                 continue
             if mu == 0.0:
                 hover_ok = bool(np.all(r.stable))
-            cat = np.where(r.A > 0, np.where(r.stable, 0, 1), np.where(r.max_dW > r.tol, 3, 2))
+            cat = _category(r)
             bad_rows.append((cat == 1) | (cat == 3))
             psi = np.asarray(r.psi)
         first_mu, first_side = float("nan"), "none"
         for mu, bad in zip(mu_values[1:], bad_rows[1:]):
-            if bad is None:
-                first_mu, first_side = float(mu), "no steady motion"
+            if bad is None or isinstance(bad, str):
+                first_mu, first_side = float(mu), "no steady motion" if bad is None else bad
                 break
             if bad.any():
                 first_mu, first_side = float(mu), _side(bad, psi)
                 break
         last = bad_rows[-1]
-        last_side = "no steady motion" if last is None else _side(last, psi)
+        last_side = "no steady motion" if last is None else last if isinstance(last, str) else _side(last, psi)
         match = hover_ok and first_side == "retreating" and last_side == "both"
         out.append((hover_ok, first_mu, first_side, last_side, match))
     return tuple(out)
@@ -886,7 +933,9 @@ def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: 
     combinations : iterable of dict, optional
         Each a full choice ``{factor: value}``. Default: every combination of condition, inflow,
         delta3 sign and function in the practical reading (the report's C.G. and thrust), then
-        one-at-a-time changes of C.G. reading, thrust and reading from the paper's own row.
+        one-at-a-time changes of C.G. reading, thrust and reading from the paper's own row and
+        from the row closest to the picture (hover controls with the periodic motion, the quadratic
+        function).
     cases, mu_values, n_psi
         Cases, advance ratios (the first must be 0) and azimuths.
     """
@@ -897,10 +946,12 @@ def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: 
         for cond, inflow, d3, fun in itertools.product(*(FORENSIC_FACTORS[n] for n in
                                                           ("condition", "inflow", "delta3", "function"))):
             combos.append({**base, "condition": cond, "inflow": inflow, "delta3": d3, "function": fun})
+        closest = {**base, "condition": FORENSIC_FACTORS["condition"][1], "function": "quadratic"}
         for name in ("cg_reading", "thrust", "reading"):
             for value in FORENSIC_FACTORS[name][1:]:
                 for fun in FORENSIC_FACTORS["function"]:
                     combos.append({**base, name: value, "function": fun})
+                combos.append({**closest, name: value})
         combinations = combos
     mu_values = np.asarray(mu_values, dtype=float)
     if mu_values[0] != 0.0:
@@ -971,7 +1022,7 @@ def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candida
                     row.append(str(exc))
                     continue
                 stable[c, i, j] = r.stable
-                cat[c, i, j] = np.where(r.A > 0, np.where(r.stable, 0, 1), np.where(r.max_dW > r.tol, 3, 2))
+                cat[c, i, j] = _category(r)
                 lam[c, i, j] = r.lambda0
                 aused[c, i, j] = r.A
                 astep3[c, i, j] = r.A_step3

@@ -3,9 +3,8 @@
 The paper's section model (:mod:`rotorlyap.model.airfoil`) has no Mach dependence. With
 ``BladeParameters.compressibility = "prandtl-glauert"`` the strip loads
 (:class:`rotorlyap.model.aero.StripAerodynamics` and the compiled kernels of
-:mod:`rotorlyap.model.compiled`) correct the incompressible coefficients ``cl``, ``cd`` at
-(and ``cm`` and the pitch-damping couple, see below) at
-each station by the section Mach number ``M = |w| / a`` (``|w|`` the in-plane air speed of the
+:mod:`rotorlyap.model.compiled`) correct the incompressible coefficients ``cl``, ``cd``, ``cm``
+and the pitch-damping couple at each station by the section Mach number ``M = |w| / a`` (``|w|`` the in-plane air speed of the
 section, ``a`` = ``BladeParameters.speed_of_sound``) as follows.
 
 Lift: the Prandtl-Glauert factor
@@ -36,7 +35,7 @@ Choices and their limits (stated, not hidden):
 * ``cm`` and the quasi-steady pitch-damping couple (``BladeParameters.cm_pitch_rate``) take
   the same factor in forward flow: the linearised theory scales every pressure coefficient
   alike, and correcting the lift alone would weaken the aerodynamic pitch damping against the
-  pitch-flap coupling by the factor, a bias of exactly the flutter margin this report measures.
+  pitch-flap coupling by the factor, a bias of exactly the stability margins this report measures.
 
 Drag: Lock's fourth-power drag rise with Korn's drag-divergence Mach number, in the form used
 in conceptual design [GurMasonSchetz2010], Korn's equation as given by [Mason1990] and Lock's

@@ -198,6 +198,13 @@ def _drag(params: BladeParameters, mu: float, tilt: float) -> tuple[float, float
     return 0.5 * params.air_density * v * v * params.flat_plate_area, v
 
 
+def _frozen(trim: ForwardFlightTrim) -> ForwardFlightTrim:
+    """``trim`` with the arrays of its motion made read-only (the result is cached and shared)."""
+    for a in (trim.motion.z0, trim.motion.coefficients, trim.motion.harmonics_deg):
+        a.flags.writeable = False
+    return trim
+
+
 @lru_cache(maxsize=128)
 def forward_flight_trim(params: BladeParameters, mu: float, target: str = "propulsive", *,
                         tol: float = 1e-9, max_iter: int = 30) -> ForwardFlightTrim:
@@ -215,14 +222,16 @@ def forward_flight_trim(params: BladeParameters, mu: float, target: str = "propu
     target : str
         One of :data:`TRIM_TARGETS`.
     tol : float
-        Convergence of ``"propulsive"``: the force-balance residuals over the weight and the
-        momentum residual over the hover inflow, all below ``tol``.
+        Convergence of ``"propulsive"``: the collocation residuals of the periodic motion
+        (rad/rad, rad/rad^2), its first flapping harmonics (rad), the force-balance residuals over
+        the weight and the momentum residual over the hover inflow, all below ``tol``.
     max_iter : int
         Largest number of Newton iterations.
 
     Returns
     -------
     ForwardFlightTrim
+        Kept (``functools.lru_cache``): its arrays are read-only.
 
     Raises
     ------
@@ -257,14 +266,14 @@ def forward_flight_trim(params: BladeParameters, mu: float, target: str = "propu
         motion = solve(base)
         t, h, y = rotor_forces(motion.params, motion)
         drag, v = _drag(base, mu, 0.0)
-        return ForwardFlightTrim(target=target, mu=mu, params=motion.params, motion=motion, thrust=t,
-                                 h_force=h, side_force=y, weight=weight, drag=drag, flight_speed=v,
-                                 induced_inflow=mean_inflow(base, mu), iterations=0)
+        return _frozen(ForwardFlightTrim(target=target, mu=mu, params=motion.params, motion=motion, thrust=t,
+                                         h_force=h, side_force=y, weight=weight, drag=drag, flight_speed=v,
+                                         induced_inflow=mean_inflow(base, mu), iterations=0))
 
     # Newton from the drag-tilted hover state; where it does not converge (a heavily coupled
     # blade far from hover), continuation in mu from hover in steps of at most 0.05
     try:
-        return _propulsive(params, base, mu, None, tol, max_iter)
+        return _frozen(_propulsive(params, base, mu, None, tol, max_iter))
     except TrimError as first:
         n = max(2, int(math.ceil(mu / 0.05)))
         guess = None
@@ -276,7 +285,7 @@ def forward_flight_trim(params: BladeParameters, mu: float, target: str = "propu
                          tr.motion.xi(TWO_PI * np.arange(_N_AZIMUTH) / _N_AZIMUTH))
         except TrimError as exc:
             raise TrimError(f"{first}; continuation in mu from hover failed too: {exc}") from exc
-        return tr
+        return _frozen(tr)
 
 
 def _propulsive(params: BladeParameters, base: BladeParameters, mu: float, guess, tol: float,
