@@ -202,3 +202,18 @@ def test_the_trims_hover_state_is_the_hover_trims_equilibrium_past_a_fold():
     assert np.abs(other - tr.steady.state).max() > 0.01
     g_trim = blade_floquet(tr.params, 0.0, steady=tr.steady).exponents.real.max()
     assert g_trim == pytest.approx(blade_floquet(p, 0.0).exponents.real.max(), abs=1e-9)
+
+
+def test_the_h_force_of_a_blade_at_zero_lift_is_its_profile_drag():
+    """Johnson (1980) section 5.4: with no pitch, no inflow and constant profile drag cd0 (no
+    lift), the rotor's H-force coefficient is the profile term C_H = sigma cd0 mu / 4 (positive
+    aft): the advancing blade's drag outweighs the retreating blade's. Checks the sign and size of
+    the H-force that the force balance of the trim uses."""
+    mu, cd0 = 0.2, 0.01
+    p = classical_blade(0.0, 0.0)
+    from dataclasses import replace
+    p = replace(p, airfoil=LinearAirfoil(lift_slope=A_SLOPE, cd0=cd0))
+    m = periodic_motion(p, mu)
+    _, h, _ = rotor_forces(p, m)
+    ch = h / (p.air_density * math.pi * p.radius ** 2 * p.tip_speed ** 2)
+    assert ch == pytest.approx(p.solidity * cd0 * mu / 4, rel=0.02)
