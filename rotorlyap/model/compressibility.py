@@ -7,9 +7,8 @@ The paper's section model (:mod:`rotorlyap.model.airfoil`) has no Mach dependenc
 and the pitch-damping couple at each station by the section Mach number ``M = |w| / a`` (``|w|`` the in-plane air speed of the
 section, ``a`` = ``BladeParameters.speed_of_sound``) as follows.
 
-Lift: the Prandtl-Glauert factor
-    ``cl = cl_inc / sqrt(1 - M_e^2)``,  ``M_e = min(M, MACH_CAP)``, ``MACH_CAP = 0.8``,
-applied in forward flow only (``|alpha| <= 90 deg``, ``alpha`` wrapped to [-180, 180) deg).
+Lift: the Prandtl-Glauert factor, ``cl = cl_inc / sqrt(1 - M_e^2)`` with
+``M_e = min(M, MACH_CAP)`` and ``MACH_CAP = 0.8``, applied in forward flow only (``|alpha| <= 90 deg``, ``alpha`` wrapped to [-180, 180) deg).
 Linearised subsonic potential flow scales every pressure coefficient of a thin section by
 ``1/beta``, ``beta = sqrt(1 - M^2)`` [Glauert1928]; the zero-lift angle does not move, so the
 whole attached lift curve, camber included, is scaled. Evidence, from the public C81 table of

@@ -54,7 +54,7 @@ GLAUERT_KX = 1.2
 
 #: The steady first-harmonic inflow of Pitt and Peters' model, ``k_x = 15 pi/32 tan(chi/2)``
 #: [PittPeters1981], as tabulated by [Chen1990] (NASA TM-102219, whose survey lists every linear
-#: model with its source; some textbook tables print 15 pi/23, a misprint of the same constant).
+#: model with its source; 15 pi/23 also appears in print, which this module used before).
 PITT_PETERS_KX = 15.0 * math.pi / 32.0
 
 
