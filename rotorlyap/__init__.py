@@ -36,6 +36,8 @@ _PUBLIC = {
     "blade_stability": "analysis.stability", "energy_function": "analysis.functions",
     "quadratic_function": "analysis.functions",
     "optimised_quadratic_function": "analysis.functions", "blade_floquet": "analysis.floquet",
+    "certify": "analysis.certify", "Certificate": "analysis.certify",
+    "forward_flight_trim": "model.forward_trim",
     # shared conventions, errors and printing
     "DEFAULT_A": "conventions", "DEFAULT_SCALES": "conventions",
     "PAPER_TEST_DISTURBANCES": "conventions", "STATE_NAMES": "conventions",

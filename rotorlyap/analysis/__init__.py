@@ -5,12 +5,15 @@
 * :mod:`~rotorlyap.analysis.stability`: :func:`blade_stability`, the blade in the engine, in the
   strict and the practical reading;
 * :mod:`~rotorlyap.analysis.floquet`: Floquet multipliers of the blade about its steady motion,
-  followed over the advance ratio.
+  followed over the advance ratio;
+* :mod:`~rotorlyap.analysis.certify`: :func:`certify`, the trim, the steady motion, the quadratic
+  function and the sound rule in one call.
 """
 
+from .certify import Certificate, certify
 from .floquet import blade_floquet, floquet_sweep
 from .functions import energy_function, optimised_quadratic_function, quadratic_function
 from .stability import blade_stability
 
-__all__ = ["blade_floquet", "blade_stability", "energy_function", "floquet_sweep",
+__all__ = ["Certificate", "blade_floquet", "blade_stability", "certify", "energy_function", "floquet_sweep",
            "optimised_quadratic_function", "quadratic_function"]

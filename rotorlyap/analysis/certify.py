@@ -1,0 +1,167 @@
+"""One call that certifies: the trim, the steady motion, a certifying function and the sound rule.
+
+:func:`certify` is the path that chapters 7 and 8 show to certify technical stability where the
+paper's energy cannot: the blade trimmed (in forward flight the helicopter, by
+:func:`rotorlyap.model.forward_trim.forward_flight_trim`), its own steady motion (the trimmed
+hover state, or the periodic motion), the quadratic Liapunov function of the linearised blade
+about it (:func:`rotorlyap.analysis.functions.quadratic_function`), and the strict reading with
+the sound rule (the theorem's (h) over the whole period) in
+:func:`rotorlyap.analysis.stability.blade_stability`. The result reads as an engineer would:
+which disturbances, per hinge in degrees and degrees per second, are guaranteed to keep the
+motion within which bound.
+
+Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
+message says so.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..conventions import DEFAULT_A, DEFAULT_SCALES, HINGES
+from ..errors import NotAsymptoticallyStableError
+from ..methods.lyapunov import TechnicalStabilityResult
+from ..model.forward_trim import TRIM_TARGETS, ForwardFlightTrim, forward_flight_trim
+from ..model.parameters import BladeParameters
+from ..model.steady import tabulate_motion
+from .floquet import blade_floquet
+from .functions import quadratic_function
+from .stability import blade_stability
+
+__all__ = ["Certificate", "certify"]
+
+
+@dataclass(frozen=True)
+class Certificate:
+    """Result of :func:`certify`.
+
+    Attributes
+    ----------
+    certified : bool
+        True if the sound rule certified every azimuth: motions that start within the start
+        region stay within the bound for ever (a numerical certificate).
+    mu : float
+        Advance ratio.
+    condition : str
+        The flight condition, one of :data:`rotorlyap.model.forward_trim.TRIM_TARGETS`.
+    trim : ForwardFlightTrim
+        The trim: controls, shaft tilt, inflow and the steady motion.
+    growth_rate : float
+        Largest real part of the Floquet exponents about the steady motion, per rad of azimuth
+        (linear theory, for comparison).
+    bound : float
+        The certified bound ``A`` of the scaled norm (0 if nothing is certified).
+    start_region : float
+        The smallest start radius ``lambda0`` over the azimuths, scaled norm (0 if nothing).
+    scales : numpy.ndarray
+        The norm's scales ``a_i``, rad and rad/rad, (6,).
+    result : TechnicalStabilityResult or None
+        The engine's result (None where no quadratic function exists).
+    message : str
+        What was certified, or why nothing was.
+    """
+
+    certified: bool
+    mu: float
+    condition: str
+    trim: ForwardFlightTrim
+    growth_rate: float
+    bound: float
+    start_region: float
+    scales: np.ndarray
+    result: TechnicalStabilityResult | None
+    message: str
+
+    def _per_hinge(self, radius: float) -> dict:
+        omega = self.trim.params.rotor_speed
+        a = np.degrees(self.scales) * radius
+        return {h: (float(a[i]), float(a[i + 3] * omega)) for i, h in enumerate(HINGES)}
+
+    @property
+    def start_region_per_hinge(self) -> dict:
+        """``{hinge: (deg, deg/s)}``: a disturbance of one hinge alone, angle or rate, within these
+        is inside the start region (a combined disturbance must satisfy the scaled norm)."""
+        return self._per_hinge(self.start_region)
+
+    @property
+    def bound_per_hinge(self) -> dict:
+        """``{hinge: (deg, deg/s)}``: the bound's extent along each hinge angle and rate."""
+        return self._per_hinge(self.bound)
+
+    def summary(self) -> str:
+        """Three lines: the verdict, the start region and the bound per hinge (0.01 deg, 0.1 deg/s)."""
+        head = (f"mu = {self.mu:g}, {self.condition}: {'certified' if self.certified else 'not certified'}"
+                f" (largest Floquet real part {self.growth_rate:.3f} per rad)")
+        if not self.certified:
+            return head + "\n  " + self.message
+        fmt = lambda d: ", ".join(f"{h} {v[0]:.2f} deg / {v[1]:.1f} deg/s" for h, v in d.items())  # noqa: E731
+        return "\n".join([head, f"  start within: {fmt(self.start_region_per_hinge)}",
+                          f"  stays within: {fmt(self.bound_per_hinge)}"])
+
+
+def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", A: float | None = None,
+            scales=None, n_psi: int = 36, Q=None, **engine_options) -> Certificate:
+    """Certify technical stability of the blade's trimmed steady motion at ``mu``.
+
+    Parameters
+    ----------
+    params : BladeParameters
+        The blade and helicopter (for ``"propulsive"`` the controls, tilt and inflow are trimmed;
+        for ``"flapping"`` and ``"none"`` a ``None`` collective is trimmed in hover).
+    mu : float
+        Advance ratio, >= 0.
+    condition : str
+        One of :data:`rotorlyap.model.forward_trim.TRIM_TARGETS`: the trimmed helicopter
+        (default), the hover collective with cyclic for zero flapping, or the paper's hover
+        controls.
+    A : float, optional
+        Requested bound of the scaled norm (default :data:`rotorlyap.conventions.DEFAULT_A`); the
+        sound rule reduces it until it holds.
+    scales : array_like, optional
+        Norm scales ``a_i``, rad and rad/rad (default :data:`rotorlyap.conventions.DEFAULT_SCALES`).
+    n_psi : int
+        Azimuths of the grid.
+    Q : array_like, optional
+        Weight of the quadratic function (default: the identity in scaled coordinates).
+    **engine_options
+        Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ...).
+
+    Returns
+    -------
+    Certificate
+
+    Raises
+    ------
+    ValueError
+        Unknown ``condition``, bad ``mu`` (from the trim).
+    rotorlyap.errors.TrimError
+        If the trim does not converge.
+    """
+    if condition not in TRIM_TARGETS:
+        raise ValueError(f"condition must be one of {TRIM_TARGETS}, got {condition!r}")
+    trim = forward_flight_trim(params, float(mu), condition)
+    mu = trim.mu
+    steady = trim.steady if mu == 0.0 else tabulate_motion(trim.motion)
+    growth = float(blade_floquet(trim.params, mu, steady=trim.steady).exponents.real.max())
+    a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
+    A = DEFAULT_A if A is None else float(A)
+    lyap = (lambda blade, st: quadratic_function(blade, st, Q, scales=a)) if Q is not None else \
+        (lambda blade, st: quadratic_function(blade, st, scales=a))
+    try:
+        res = blade_stability(trim.params, mu, lyapunov=lyap, steady=steady, A=A, scales=a, n_psi=n_psi,
+                              **engine_options)
+    except NotAsymptoticallyStableError as exc:
+        return Certificate(certified=False, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=0.0,
+                           start_region=0.0, scales=a, result=None,
+                           message=f"the linearised blade is unstable (largest Floquet real part {growth:.3f} "
+                                   f"per rad): no quadratic function exists, nothing can be certified ({exc})")
+    ok = bool(np.all(res.stable))
+    lam = float(np.min(res.lambda0)) if ok else 0.0
+    bound = float(res.A) if ok else 0.0
+    if not math.isfinite(lam):
+        lam = 0.0
+    return Certificate(certified=ok, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=bound,
+                       start_region=lam, scales=a, result=res, message=res.message)

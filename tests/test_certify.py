@@ -1,0 +1,60 @@
+"""rotorlyap.certify: one call from a blade to a certificate read per hinge."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from rotorlyap import certify
+from rotorlyap.analysis.floquet import blade_floquet
+from rotorlyap.methods.simulation import simulate
+from rotorlyap.model.blade import Blade
+from rotorlyap.model.parameters import BladeParameters
+from rotorlyap.model.steady import disturbed_rhs
+
+
+@pytest.fixture(scope="module")
+def hover_certificate():
+    return certify(BladeParameters.flight_case("forward"), 0.0)
+
+
+def test_the_forward_cg_hover_is_certified_and_read_per_hinge(hover_certificate):
+    """The certificate's start region and bound along each hinge are the scaled norm's radii
+    times the scales: angle a_i lambda0 in degrees, rate a_(i+3) lambda0 Omega in degrees per
+    second (rad/rad of azimuth times Omega rad/s)."""
+    c = hover_certificate
+    assert c.certified and "numerical certificate" in c.message
+    assert 0.0 < c.start_region < c.bound <= 1.0
+    omega = c.trim.params.rotor_speed
+    flap_deg, flap_rate = c.start_region_per_hinge["flap"]
+    assert flap_deg == pytest.approx(np.degrees(c.scales[0]) * c.start_region, rel=1e-12)
+    assert flap_rate == pytest.approx(np.degrees(c.scales[3]) * c.start_region * omega, rel=1e-12)
+    assert c.bound_per_hinge["pitch"][0] == pytest.approx(np.degrees(c.scales[2]) * c.bound, rel=1e-12)
+    assert "start within" in c.summary()
+
+
+def test_certified_starts_stay_within_the_bound_in_simulation(hover_certificate):
+    """What the certificate promises: motions of the nonlinear blade from the start region's
+    boundary (here along each signed hinge axis) stay within the bound for ten revolutions."""
+    c = hover_certificate
+    blade = Blade(c.trim.params, 0.0)
+    f = disturbed_rhs(blade, c.trim.steady)
+    x0 = 0.999 * c.start_region * np.vstack([np.eye(6), -np.eye(6)]) * c.scales
+    sim = simulate(f, x0, 0.0, 10, scales=c.scales)
+    assert np.all(sim.max_norm <= c.bound)
+
+
+def test_an_unstable_blade_is_not_certified_and_says_why():
+    """The backward C.G. with compressible sections is unstable in hover in linear theory
+    (chapter 8): no quadratic function exists, so nothing is certified, and the message says so."""
+    c = certify(BladeParameters.flight_case("backward"), 0.0)
+    assert not c.certified and c.result is None and c.bound == 0.0
+    assert "linearised blade is unstable" in c.message
+    assert c.growth_rate == pytest.approx(
+        blade_floquet(c.trim.params, 0.0, steady=c.trim.steady).exponents.real.max(), abs=1e-12)
+    assert c.growth_rate > 0.0
+
+
+def test_certify_refuses_an_unknown_condition():
+    with pytest.raises(ValueError, match="condition must be one of"):
+        certify(BladeParameters.flight_case("forward"), 0.1, condition="cruise")
