@@ -239,3 +239,19 @@ def test_duck_typed_airfoil_is_accepted():
 
     q = BladeParameters(airfoil=Flat())
     assert q.lift_slope == pytest.approx(1.98, rel=1e-3)
+
+
+@pytest.mark.parametrize("changes, match", [
+    (dict(rotor_speed=258.0), r"tip speed of 2025 m/s, 5\.95 times.*if 258\.0 is in rpm, give 27\.02 rad/s"),
+    (dict(twist=-18.0), r"twist = -18\.0 rad is -1031 deg.*if -18\.0 is in degrees, give -0\.3142 rad"),
+])
+def test_unit_slips_are_refused_with_the_likely_mistake(changes, match):
+    """A rotor speed in rpm (a tip faster than sound) or a pretwist in degrees (beyond 40 deg) is
+    refused with the allowed range and the value it probably should have been."""
+    with pytest.raises(ValueError, match=match):
+        BladeParameters(**changes)
+
+
+def test_the_largest_plausible_values_pass():
+    """A tip just subsonic and a 34 deg pretwist are accepted (the checks catch unit slips only)."""
+    BladeParameters(rotor_speed=0.99 * 340.294 / 7.85, twist=-0.6)

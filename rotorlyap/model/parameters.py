@@ -43,6 +43,7 @@ __all__ = [
     "FIELD_INFO",
     "INFLOW_MODELS",
     "ISA_SPEED_OF_SOUND",
+    "MAX_PITCH_ANGLE",
     "TABLE_I_AIRFOIL",
     "THIN_AIRFOIL_CM_Q",
     "parameter_table",
@@ -165,6 +166,32 @@ def _profile_values(value: Profile, r: NDArray[np.float64]) -> NDArray[np.float6
     if callable(value):
         return np.broadcast_to(np.asarray(value(r), dtype=np.float64), r.shape)
     return np.full(r.shape, float(value))
+
+
+#: Largest pretwist accepted, rad: 40 deg. Larger values are almost always degrees given where
+#: radians are expected.
+MAX_PITCH_ANGLE: float = math.radians(40.0)
+
+
+def _check_unit_slips(p: "BladeParameters") -> None:
+    """Refuse values that are almost certainly in the wrong unit, saying the allowed range and
+    the likely slip: a tip faster than sound at sea level (rpm given for rad/s; the check does not
+    use ``speed_of_sound``, which a study may lower on purpose), a pretwist beyond 40 deg
+    (degrees given for radians)."""
+    tip_speed = p.rotor_speed * p.radius
+    if tip_speed >= ISA_SPEED_OF_SOUND:
+        raise ValueError(
+            f"rotor_speed = {p.rotor_speed!r} rad/s gives a tip speed of {tip_speed:.0f} m/s, "
+            f"{tip_speed / ISA_SPEED_OF_SOUND:.2f} times the sea-level speed of sound: the tip speed must be "
+            f"below {ISA_SPEED_OF_SOUND} m/s. rotor_speed is in rad/s; if {p.rotor_speed!r} is in rpm, give "
+            f"{p.rotor_speed * math.pi / 30.0:.4g} rad/s")
+    # the controls (collective, cyclic) are left alone: the trims try wild values on their way
+    for name in ("twist",):
+        v = getattr(p, name)
+        if v is not None and abs(v) > MAX_PITCH_ANGLE:
+            raise ValueError(
+                f"{name} = {v!r} rad is {math.degrees(v):.0f} deg, beyond the +-40 deg (+-0.698 rad) allowed: "
+                f"{name} is in rad; if {v!r} is in degrees, give {math.radians(v):.4g} rad")
 
 
 @dataclass(frozen=True)
@@ -384,6 +411,7 @@ class BladeParameters:
         if self.blade_length >= self.radius:
             raise ValueError(f"blade_length must be < radius = {self.radius!r} m (the blade root lies "
                              f"outboard of the shaft), got {self.blade_length!r}")
+        _check_unit_slips(self)
 
         he = self.hub_elements
         if isinstance(he, (str, bytes)) or not hasattr(he, "__len__"):
