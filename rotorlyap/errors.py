@@ -12,6 +12,9 @@ Two families, each a subclass of the built-in exception a caller would expect:
   Liapunov function about that motion exists. It carries the spectral radius of the monodromy
   matrix and the largest growth rate.
 
+One warning: :class:`TemplateValuesWarning`, for a parameter set of another rotor that keeps
+values of the paper's blade it was not given.
+
 Callers catch the type, never the text of the message. Bad arguments (a negative advance
 ratio, an unknown option) raise ``ValueError`` or ``TypeError`` with a message that says what
 is allowed.
@@ -21,7 +24,7 @@ from __future__ import annotations
 
 __all__ = [
     "ConvergenceError", "EquilibriumError", "InflowConvergenceError",
-    "NotAsymptoticallyStableError", "PeriodicMotionError", "TrimError",
+    "NotAsymptoticallyStableError", "PeriodicMotionError", "TemplateValuesWarning", "TrimError",
 ]
 
 
@@ -115,3 +118,9 @@ class NotAsymptoticallyStableError(ValueError):
         super().__init__(message)
         self.spectral_radius = spectral_radius
         self.growth_rate = growth_rate
+
+
+class TemplateValuesWarning(UserWarning):
+    """A parameter set describes another rotor than the paper's but keeps blade fields of the
+    Table I template (:func:`rotorlyap.model.parameters.field_origins`): values the user did not
+    give, such as the pitch-flap coupling or the lag damper of the paper's blade."""

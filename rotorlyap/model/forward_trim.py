@@ -61,6 +61,7 @@ from .blade import Blade
 from .inflow import mean_inflow, momentum_inflow
 from .parameters import BladeParameters
 from .steady import PeriodicMotion, SteadyMotion, _differentiation_matrix, _first_harmonics, periodic_motion
+from .trim import _with_advice, check_trimmed_pitch
 
 __all__ = ["TRIM_TARGETS", "ForwardFlightTrim", "forward_flight_trim", "rotor_forces"]
 
@@ -272,6 +273,16 @@ def forward_flight_trim(params: BladeParameters, mu: float, target: str = "propu
 
     # Newton from the drag-tilted hover state; where it does not converge (a heavily coupled
     # blade far from hover), continuation in mu from hover in steps of at most 0.05
+    try:
+        trim = _propulsive_with_continuation(params, base, mu, tol, max_iter)
+    except TrimError as exc:
+        raise _with_advice(exc, params) from exc.__cause__
+    check_trimmed_pitch(params, trim.params.collective, f"forward_flight_trim (mu = {mu:g})")
+    return trim
+
+
+def _propulsive_with_continuation(params: BladeParameters, base: BladeParameters, mu: float, tol: float,
+                                  max_iter: int) -> ForwardFlightTrim:
     try:
         return _frozen(_propulsive(params, base, mu, None, tol, max_iter))
     except TrimError as first:

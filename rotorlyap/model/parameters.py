@@ -28,24 +28,36 @@ and friends to evaluate them.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field, fields
+from functools import lru_cache
+from pathlib import Path
 from typing import Any, Callable, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..errors import TemplateValuesWarning
+from .parameter_files import read_file, write_file
 from .airfoil import NACA23012, Airfoil, LinearAirfoil
 
 __all__ = [
     "BladeParameters",
+    "BLADE_FIELDS",
     "CG_POSITIONS",
     "COMPRESSIBILITY_MODELS",
     "FIELD_INFO",
+    "EXAMPLE_FILES",
+    "FILE_AIRFOILS",
+    "ROTOR_IDENTITY_FIELDS",
+    "TEMPLATE_NAME",
+    "TabulatedProfile",
     "INFLOW_MODELS",
     "ISA_SPEED_OF_SOUND",
     "MAX_PITCH_ANGLE",
     "TABLE_I_AIRFOIL",
     "THIN_AIRFOIL_CM_Q",
+    "field_origins",
     "parameter_table",
 ]
 
@@ -80,7 +92,58 @@ TABLE_I_AIRFOIL: Airfoil = Airfoil(
     aerodynamic_centre=0.235,
 )
 
+#: Parameter files of real blades from public data, shipped with the package (name -> path).
+EXAMPLE_FILES: dict[str, Path] = {
+    "sa330-puma": Path(__file__).resolve().parents[1] / "data" / "sa330_puma.toml",
+}
+
+#: Named sections a parameter file may use for ``airfoil`` (:meth:`BladeParameters.from_file`).
+FILE_AIRFOILS: dict[str, Any] = {
+    "table-i": TABLE_I_AIRFOIL,   # NACA 23012 with its moment about the Table I a.c. (the default)
+    "naca23012": NACA23012,       # NACA 23012 with its moment about its own a.c., 0.247 c
+    "linear": LinearAirfoil(),    # thin-airfoil linear section, cl = 2 pi alpha', either edge leading
+}
+
 Profile = Union[float, Callable[[NDArray[np.float64]], ArrayLike]]
+
+
+@dataclass(frozen=True)
+class TabulatedProfile:
+    """A spanwise profile given as a table: piecewise linear in ``r/R`` between the stations,
+    constant beyond the first and the last.
+
+    A callable ``f(r_over_R)`` like any profile of :class:`BladeParameters` (chord, C.G.,
+    aerodynamic centre, mass per length), and the one kind of callable a parameter file
+    (:meth:`BladeParameters.to_file`) can hold.
+
+    Parameters
+    ----------
+    r_over_R : tuple of float
+        Stations, non-dimensional radius r/R, strictly increasing, at least 2.
+    values : tuple of float
+        The profile's value at each station, in the field's unit.
+    """
+
+    r_over_R: tuple[float, ...]
+    values: tuple[float, ...]
+
+    def __post_init__(self) -> None:
+        r = tuple(_real(f"r_over_R[{i}]", v, "a radius r/R") for i, v in enumerate(self.r_over_R))
+        v = tuple(_real(f"values[{i}]", x, "a finite value") for i, x in enumerate(self.values))
+        if len(r) < 2 or len(r) != len(v):
+            raise ValueError(f"a tabulated profile needs at least 2 stations and as many values as stations, "
+                             f"got {len(r)} stations and {len(v)} values")
+        if any(b <= a for a, b in zip(r, r[1:])):
+            raise ValueError(f"the stations r_over_R of a tabulated profile must increase strictly, got {r}")
+        object.__setattr__(self, "r_over_R", r)
+        object.__setattr__(self, "values", v)
+
+    def __call__(self, r_over_R: ArrayLike) -> NDArray[np.float64]:
+        return np.interp(np.asarray(r_over_R, dtype=np.float64), self.r_over_R, self.values)
+
+    @property
+    def __name__(self) -> str:  # shown by parameter_table like a function's name
+        return f"table of {len(self.r_over_R)} stations"
 
 _M = "m"
 #: (unit, source or reason) of every field; ``parameter_table`` uses it.
@@ -459,6 +522,7 @@ class BladeParameters:
                 or callable(getattr(self.airfoil, "coefficients", None))):
             raise TypeError("airfoil must be an Airfoil, a LinearAirfoil or an object with a "
                             f"coefficients(alpha) method, got {self.airfoil!r}")
+        _warn_template(self)
 
     # ------------------------------------------------------------------ cases
     @classmethod
@@ -508,6 +572,72 @@ class BladeParameters:
         overrides.setdefault("inflow_model", "pitt-peters")
         overrides.setdefault("compressibility", "prandtl-glauert")
         return cls.table_i(cg, **overrides)
+
+    # ------------------------------------------------------------------ files
+    @classmethod
+    def from_file(cls, path: str | Path) -> "BladeParameters":
+        """Read a parameter file (TOML, schema ``rotorlyap.blade/1``: :mod:`rotorlyap.model.parameter_files`).
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+
+        Returns
+        -------
+        BladeParameters
+
+        Raises
+        ------
+        ValueError, TypeError
+            A file of another schema, an unknown key or a value the field does not allow; the
+            message names the file and the field.
+
+        Warns
+        -----
+        rotorlyap.errors.TemplateValuesWarning
+            Blade fields the file leaves out (they take the Table I template's values).
+        """
+        path = Path(path)
+        values = read_file(path, [f.name for f in fields(cls)], FILE_AIRFOILS, TabulatedProfile)
+        with warnings.catch_warnings():
+            # the file says exactly which fields it gives: the warning below names those it leaves out
+            warnings.simplefilter("ignore", TemplateValuesWarning)
+            try:
+                params = cls(**values)
+            except (TypeError, ValueError) as exc:
+                raise type(exc)(f"{path}: {exc}") from exc
+        missing = [n for n in BLADE_FIELDS if n not in values]
+        if missing:
+            warnings.warn(
+                f"{path} leaves out {len(missing)} of the {len(BLADE_FIELDS)} blade fields, which take the "
+                f"template {TEMPLATE_NAME} values: "
+                + "; ".join(_describe(n, getattr(params, n)) for n in missing)
+                + ". Give your blade's value of each, or filter rotorlyap.errors.TemplateValuesWarning to keep "
+                  "them knowingly.", TemplateValuesWarning, stacklevel=2)
+        return params
+
+    def to_file(self, path: str | Path, *, name: str | None = None,
+                sources: dict[str, str] | None = None) -> Path:
+        """Write the parameters as a TOML file that :meth:`from_file` reads back equal
+        (:func:`rotorlyap.model.parameter_files.write_parameters`).
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+        name : str, optional
+            The blade's name (``[about]``).
+        sources : dict, optional
+            ``{field: citation}`` (``[about.sources]``).
+
+        Returns
+        -------
+        pathlib.Path
+        """
+        origins = field_origins(self)
+        entries = [(f.name, getattr(self, f.name), f"{FIELD_INFO[f.name][0]}; {origins[f.name]}")
+                   for f in fields(self)]
+        return write_file(path, entries, FILE_AIRFOILS, TabulatedProfile, name=name,
+                                          sources=sources)
 
     # ------------------------------------------------------------------ geometry
     @property
@@ -626,9 +756,148 @@ class BladeParameters:
         """Helicopter weight ``helicopter_mass * gravity``, N."""
         return self.helicopter_mass * self.gravity
 
+    @property
+    def blade_loading(self) -> float:
+        """Blade loading ``C_T / sigma`` of a thrust equal to the weight, -:
+        ``W / (rho pi R^2 (Omega R)^2 sigma)`` (infinite in vacuum)."""
+        disc = self.air_density * math.pi * self.radius ** 2 * self.tip_speed ** 2 * self.solidity
+        return self.weight / disc if disc > 0 else math.inf
+
+    def pitch_at(self, r_over_R: float, collective: float | None = None) -> float:
+        """Pitch of the section at ``r_over_R`` for a collective at the pitch hinge (root pitch),
+        rad: ``collective + twist (r - (R - R1)) / R1`` (``collective`` defaults to the field)."""
+        c = self.collective if collective is None else collective
+        if c is None:
+            raise ValueError("pitch_at needs a collective: the field is None (trimmed) and none was given")
+        return float(c + self.twist * (r_over_R * self.radius - self.root_cutout) / self.blade_length)
+
+
+# ---------------------------------------------------------------------- provenance
+#: The template every field not given comes from: the class defaults are the paper's blade
+#: (Table I) with the report's assumptions for what the paper omits.
+TEMPLATE_NAME: str = "Table I"
+
+#: The fields that describe the blade, its hub and the helicopter (the others are the flight
+#: condition and the options of the model). A user describing another blade must give each.
+BLADE_FIELDS: tuple[str, ...] = (
+    "radius", "blade_length", "hub_elements", "chord", "twist", "pitch_flap_coupling", "rotor_speed",
+    "pitch_stiffness", "lag_damping", "flap_stiffness", "lag_stiffness", "flap_damping", "pitch_damping",
+    "aerodynamic_centre", "pitch_axis", "cg_position", "mass_per_length", "pitch_radius_of_gyration",
+    "n_blades", "helicopter_mass", "airfoil", "flat_plate_area",
+)
+
+#: The fields that identify a rotor: a parameter set with another value of any of them describes
+#: another rotor than the paper's, and its other blade fields must not silently stay Table I's.
+ROTOR_IDENTITY_FIELDS: tuple[str, ...] = ("radius", "blade_length", "rotor_speed", "n_blades")
+
+#: Blades already warned about (key: the rotor's identity and its template fields): the trims and
+#: analyses rebuild a blade many times with ``dataclasses.replace``; one warning per blade is enough.
+_WARNED: set = set()
+
+
+def _same(a: Any, b: Any) -> bool:
+    try:
+        return type(a) is type(b) and bool(a == b)
+    except Exception:  # noqa: BLE001 (an exotic airfoil object)
+        return False
+
+
+def _template_values(name: str) -> tuple:
+    """The values of field ``name`` that count as the template's: the class default, the paper's
+    inflow model (:meth:`BladeParameters.table_i`) and the three Table I C.G. positions."""
+    f = BladeParameters.__dataclass_fields__[name]
+    values = [f.default]
+    if name == "cg_position":
+        values += list(CG_POSITIONS.values())
+    elif name == "inflow_model":
+        values.append("glauert")
+    return tuple(values)
+
+
+def _is_template(name: str, value: Any) -> bool:
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return any(isinstance(t, (int, float)) and float(t) == float(value) for t in _template_values(name))
+    return any(_same(value, t) for t in _template_values(name))
+
+
+def field_origins(params: BladeParameters) -> dict[str, str]:
+    """Where each field's value comes from: ``"given"`` or ``"template Table I"``.
+
+    A field whose value equals the template's (:data:`TEMPLATE_NAME`: the class default, any of the
+    three Table I C.G. positions, the paper's Glauert inflow) is ``"template Table I"``, whether it
+    was left out or given equal; any other value is ``"given"``. The comparison is by value, so it
+    survives :func:`dataclasses.replace` and files (:meth:`BladeParameters.from_file`).
+
+    Parameters
+    ----------
+    params : BladeParameters
+
+    Returns
+    -------
+    dict
+        ``{field name: "given" | "template Table I"}`` in field order.
+    """
+    return {f.name: (f"template {TEMPLATE_NAME}" if _is_template(f.name, getattr(params, f.name)) else "given")
+            for f in fields(params)}
+
+
+def _other_rotor(params: BladeParameters) -> tuple[str, ...]:
+    """The identity fields in which ``params`` differs from the template (empty: the Table I rotor)."""
+    return tuple(n for n in ROTOR_IDENTITY_FIELDS if not _is_template(n, getattr(params, n)))
+
+
+def _describe(name: str, value: Any) -> str:
+    unit = FIELD_INFO[name][0]
+    if name == "airfoil":
+        return f"airfoil = {getattr(value, 'name', value)!s}"
+    unit = "" if unit in ("-", "") else f" {unit}"
+    return f"{name} = {value!r}{unit}"
+
+
+def _warn_template(params: BladeParameters) -> None:
+    """Warn (once per blade) when another rotor keeps blade fields of the Table I template."""
+    other = _other_rotor(params)
+    if not other:
+        return
+    kept = tuple(n for n in BLADE_FIELDS if _is_template(n, getattr(params, n)))
+    if not kept:
+        return
+    key = (tuple(repr(getattr(params, n)) for n in ROTOR_IDENTITY_FIELDS), kept)
+    if key in _WARNED:
+        return
+    _WARNED.add(key)
+    warnings.warn(
+        f"BladeParameters: {', '.join(other)} {'describe' if len(other) > 1 else 'describes'} another rotor than Table I's, but {len(kept)} of its "
+        f"{len(BLADE_FIELDS)} blade fields keep the template {TEMPLATE_NAME} values: "
+        + "; ".join(_describe(n, getattr(params, n)) for n in kept)
+        + ". Give your blade's value of each (parameter_table(params) marks every field 'given' or "
+          f"'template {TEMPLATE_NAME}'); to keep them knowingly, filter "
+          "rotorlyap.errors.TemplateValuesWarning.",
+        TemplateValuesWarning, stacklevel=_caller_level())
+
+
+def _caller_level() -> int:
+    """``stacklevel`` for a warning issued two calls below here that names the first caller
+    outside rotorlyap and :mod:`dataclasses` (the user's line, also through ``replace``)."""
+    import sys
+    frame, level = sys._getframe(2), 2
+    package = str(Path(__file__).resolve().parents[1])
+    while frame is not None:
+        filename = frame.f_code.co_filename
+        if not (filename.startswith(package) or filename.endswith("dataclasses.py") or filename == "<string>"):
+            return level
+        frame, level = frame.f_back, level + 1
+    return 2
+
 
 def parameter_table(params: BladeParameters) -> list[tuple[str, Any, str, str]]:
     """Rows (name, value, unit, source) for the book's parameter/assumption table.
+
+    The source tells a given value from a template one (:func:`field_origins`): ``"given"`` for a
+    value that differs from the template's; otherwise the template's source or reason
+    (:data:`FIELD_INFO`: "Table I", "assumed: ..."), prefixed ``"template Table I: "`` when
+    ``params`` describes another rotor than Table I's (:data:`ROTOR_IDENTITY_FIELDS`), where such a
+    value is a leftover of the template rather than a datum of the blade.
 
     Parameters
     ----------
@@ -640,6 +909,8 @@ def parameter_table(params: BladeParameters) -> list[tuple[str, Any, str, str]]:
         One row per field, in field order; the value is shown as given
         (callables and the airfoil by their repr/name).
     """
+    origins = field_origins(params)
+    prefix = f"template {TEMPLATE_NAME}: " if _other_rotor(params) else ""
     rows = []
     for f in fields(params):
         value = getattr(params, f.name)
@@ -648,5 +919,5 @@ def parameter_table(params: BladeParameters) -> list[tuple[str, Any, str, str]]:
         elif callable(value):
             value = getattr(value, "__name__", repr(value))
         unit, source = FIELD_INFO[f.name]
-        rows.append((f.name, value, unit, source))
+        rows.append((f.name, value, unit, "given" if origins[f.name] == "given" else prefix + source))
     return rows

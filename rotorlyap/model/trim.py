@@ -26,7 +26,46 @@ from .equilibrium import hover_equilibrium
 from .inflow import mean_inflow
 from .parameters import BladeParameters
 
-__all__ = ["HoverTrim", "hover_trim"]
+__all__ = ["HoverTrim", "MAX_TRIMMED_PITCH", "check_trimmed_pitch", "hover_trim", "loading_advice"]
+
+#: Largest pitch of the three-quarter-radius section a trim may reach, rad (25 deg): beyond it
+#: every section of the blade is deep in stall, and the trim has found a parameter mistake (a
+#: weight in pounds, a chord or a rotor speed in the wrong unit), not a flight condition.
+MAX_TRIMMED_PITCH: float = math.radians(25.0)
+
+
+def loading_advice(params: BladeParameters) -> str:
+    """What a failed trim asks of the blade, in one sentence: its blade loading ``C_T/sigma``,
+    the mean lift coefficient ``6 C_T/sigma`` that blade-element theory (uniform inflow, untwisted
+    blade) needs to carry it, the section's ``cl_max``, and what to change."""
+    cts = params.blade_loading
+    cl_max = getattr(params.airfoil, "cl_max", None)
+    need = (f"a mean lift coefficient 6 C_T/sigma = {6 * cts:.2f}"
+            + (f" against the section's cl_max = {cl_max:.2f}" if cl_max is not None else ""))
+    paper = BladeParameters.table_i().blade_loading
+    return (f"the weight asks a blade loading C_T/sigma = {cts:.3f} of this rotor ({need}; the paper's "
+            f"rotor hovers at C_T/sigma = {paper:.3f}): check helicopter_mass (kg), rotor_speed (rad/s), "
+            f"chord (m), radius (m) and n_blades, or lower the weight")
+
+
+def _with_advice(exc: TrimError, params: BladeParameters) -> TrimError:
+    new = TrimError(f"{exc}; {loading_advice(params)}", thrust=exc.thrust, weight=exc.weight,
+                    flap_angle=exc.flap_angle, residual=exc.residual, tolerance=exc.tolerance,
+                    iterations=exc.iterations)
+    new.__cause__ = exc.__cause__
+    return new
+
+
+def check_trimmed_pitch(params: BladeParameters, collective: float, where: str) -> None:
+    """Refuse a trimmed collective whose three-quarter-radius pitch exceeds
+    :data:`MAX_TRIMMED_PITCH`, with the blade loading and the likely mistake."""
+    p75 = params.pitch_at(0.75, collective)
+    if abs(p75) > MAX_TRIMMED_PITCH:
+        raise TrimError(
+            f"{where}: the trimmed collective {math.degrees(collective):.1f} deg at the pitch hinge sets the "
+            f"section at 0.75 R to {math.degrees(p75):.1f} deg, beyond the +-{math.degrees(MAX_TRIMMED_PITCH):.0f} "
+            f"deg a flying rotor needs; {loading_advice(params)}; a twist in degrees for radians, or the "
+            f"template's pitch-flap coupling and pitch stiffness on another blade, also do this")
 
 @dataclass(frozen=True)
 class HoverTrim:
@@ -132,8 +171,19 @@ def hover_trim(params: BladeParameters, step: float = 0.01, max_flap: float = 0.
     ------
     rotorlyap.errors.TrimError
         (a ``RuntimeError``) In vacuum, if the weight is not positive, if no equilibrium is found along the branch,
-        or if the thrust does not reach the weight below ``max_flap``.
+        if the thrust does not reach the weight below ``max_flap``, or if the trimmed pitch at 0.75 R
+        exceeds :data:`MAX_TRIMMED_PITCH`; the message gives the blade loading ``C_T/sigma`` and
+        what to change (:func:`loading_advice`).
     """
+    try:
+        trim = _hover_trim(params, step, max_flap, xtol)
+    except TrimError as exc:
+        raise _with_advice(exc, params) from exc.__cause__
+    check_trimmed_pitch(params, trim.collective, "hover_trim")
+    return trim
+
+
+def _hover_trim(params: BladeParameters, step: float, max_flap: float, xtol: float) -> HoverTrim:
     weight = params.helicopter_mass * params.gravity
     if params.air_density <= 0.0:
         raise TrimError("hover_trim: no thrust in vacuum (air_density = 0); give a collective", weight=weight)
