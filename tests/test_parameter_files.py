@@ -28,7 +28,7 @@ PUMA = EXAMPLE_FILES["sa330-puma"]
 
 @pytest.fixture(autouse=True)
 def _fresh_warning_registry():
-    """Each test sees the template warning afresh (it is issued once per blade per process)."""
+    """Each test sees the template warning afresh (it is issued once per rotor per process)."""
     parameters_module._WARNED.clear()
     yield
     parameters_module._WARNED.clear()
@@ -54,12 +54,24 @@ def test_another_rotor_built_on_the_template_is_warned_with_the_fields_it_kept()
 
 
 def test_the_warning_comes_once_per_blade_not_at_every_rebuild():
-    """The trims rebuild a blade many times with dataclasses.replace: one warning per blade."""
+    """The trims and a user's studies rebuild a blade many times with dataclasses.replace: one
+    warning per rotor, not at every rebuild (not even with other template fields)."""
     with pytest.warns(TemplateValuesWarning) as rec:
         p = _puma_like()
         dataclasses.replace(p, collective=0.1)
         dataclasses.replace(p, cyclic_cos=0.01)
+        dataclasses.replace(p, pitch_flap_coupling=0.1)
     assert len(rec) == 1
+
+
+def test_a_blade_read_from_a_file_is_warned_by_the_file_only():
+    """The file knows which fields it gives: its warning names them; rebuilding its blade with
+    dataclasses.replace adds no second, by-value warning (which would list fields the file gave
+    equal to the template's, such as n_blades = 4)."""
+    with pytest.warns(TemplateValuesWarning) as rec:
+        p = BladeParameters.from_file(PUMA)
+        dataclasses.replace(p, pitch_flap_coupling=0.0)
+    assert len(rec) == 1 and "leaves out 3 of the 22 blade fields" in str(rec[0].message)
 
 
 def test_variants_of_the_table_i_rotor_are_not_warned():

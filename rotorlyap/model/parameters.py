@@ -607,6 +607,7 @@ class BladeParameters:
             except (TypeError, ValueError) as exc:
                 raise type(exc)(f"{path}: {exc}") from exc
         missing = [n for n in BLADE_FIELDS if n not in values]
+        _WARNED.add(_rotor_key(params))  # this warning, not the by-value one, for the file's rotor
         if missing:
             warnings.warn(
                 f"{path} leaves out {len(missing)} of the {len(BLADE_FIELDS)} blade fields, which take the "
@@ -790,8 +791,9 @@ BLADE_FIELDS: tuple[str, ...] = (
 #: another rotor than the paper's, and its other blade fields must not silently stay Table I's.
 ROTOR_IDENTITY_FIELDS: tuple[str, ...] = ("radius", "blade_length", "rotor_speed", "n_blades")
 
-#: Blades already warned about (key: the rotor's identity and its template fields): the trims and
-#: analyses rebuild a blade many times with ``dataclasses.replace``; one warning per blade is enough.
+#: Rotors already warned about (key: the values of :data:`ROTOR_IDENTITY_FIELDS`): the trims,
+#: analyses and a user's studies rebuild a blade many times with ``dataclasses.replace``; one
+#: warning per rotor and process is enough (a file read warns once, precisely, for its rotor).
 _WARNED: set = set()
 
 
@@ -854,15 +856,19 @@ def _describe(name: str, value: Any) -> str:
     return f"{name} = {value!r}{unit}"
 
 
+def _rotor_key(params: BladeParameters) -> tuple:
+    return tuple(repr(getattr(params, n)) for n in ROTOR_IDENTITY_FIELDS)
+
+
 def _warn_template(params: BladeParameters) -> None:
-    """Warn (once per blade) when another rotor keeps blade fields of the Table I template."""
+    """Warn (once per rotor) when another rotor keeps blade fields of the Table I template."""
     other = _other_rotor(params)
     if not other:
         return
     kept = tuple(n for n in BLADE_FIELDS if _is_template(n, getattr(params, n)))
     if not kept:
         return
-    key = (tuple(repr(getattr(params, n)) for n in ROTOR_IDENTITY_FIELDS), kept)
+    key = _rotor_key(params)
     if key in _WARNED:
         return
     _WARNED.add(key)
