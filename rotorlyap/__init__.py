@@ -38,6 +38,7 @@ _PUBLIC = {
     "optimised_quadratic_function": "analysis.functions", "blade_floquet": "analysis.floquet",
     "certify": "analysis.certify", "Certificate": "analysis.certify",
     "forward_flight_trim": "model.forward_trim",
+    "sweep": "analysis.sweep", "SweepResult": "analysis.sweep",
     # shared conventions, errors and printing
     "DEFAULT_A": "conventions", "DEFAULT_SCALES": "conventions",
     "PAPER_TEST_DISTURBANCES": "conventions", "STATE_NAMES": "conventions",

@@ -1,12 +1,32 @@
 """The command line: ``python -m rotorlyap``.
 
-``python -m rotorlyap analyse --cg forward --mu 0.15``
-    one technical-stability analysis of a Table I case, printed as JSON;
+``python -m rotorlyap analyse [--params FILE | --cg forward] --mu 0.15``
+    one technical-stability analysis (any function, reading and rule of
+    :func:`rotorlyap.analysis.stability.blade_stability`), printed as JSON; ``certified`` is
+    true only for a numerical certificate (strict reading, sound rule, every azimuth certified),
+    and ``warnings`` name the combinations that cannot certify;
+``python -m rotorlyap certify [--params FILE | --cg forward] --mu 0.1``
+    :func:`rotorlyap.certify`: the trimmed helicopter, its own steady motion, the quadratic
+    function and the sound rule; the certificate per hinge in deg and deg/s, printed as JSON;
+``python -m rotorlyap sweep --mu 0:0.3:0.1 --cg forward,backward --set lag_damping=5000,10000 --out t.csv``
+    :func:`rotorlyap.analysis.sweep.sweep`: the certificate over a full-factorial grid, one table
+    (CSV or JSON), on every core or on a Dask cluster (``--scheduler``), with a progress bar;
 ``python -m rotorlyap figures --out DIR``
     regenerates the data (CSV) and pictures (PNG) of the paper's Figs 4-8 into ``DIR``.
 
+A blade is Table I's (``--cg`` chooses its C.G. case, default forward) or read from a parameter
+file (``--params FILE``, TOML, :meth:`rotorlyap.BladeParameters.from_file`); with a file,
+``--cg`` given explicitly overrides the file's ``cg_position`` by the Table I case's.
+
+Printed numbers carry 4 significant digits (angles in deg, rates in deg/s, the bound and start
+radius in units of the scaled norm), except the per-azimuth arrays of ``analyse`` (6 decimals).
+Warnings go to stderr as well as into the JSON. The command line runs one BLAS thread unless
+``OPENBLAS_NUM_THREADS`` (or ``MKL_NUM_THREADS``) says otherwise: the searches work on tiny arrays,
+where more threads only wait for a busy core.
+
 Bad arguments give a one-line message and exit status 2; a failure of the analysis itself
-(for example a trim that does not converge) gives a message and exit status 1.
+(for example a trim that does not converge, a parameter file with a bad value, or a missing
+optional dependency) gives a message and exit status 1.
 """
 
 from __future__ import annotations
@@ -14,17 +34,25 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 import time
+from decimal import Decimal, InvalidOperation
 from pathlib import Path
+from typing import Any, Callable, TextIO
 
-import numpy as np
+# numpy is imported where it is used, after main() has chosen the BLAS threads (_one_blas_thread)
 
-from .conventions import MAX_ADVANCE_RATIO
-
-__all__ = ["main"]
+__all__ = ["build_parser", "main"]
 
 CG_CHOICES = ("forward", "neutral", "backward")
+CONDITIONS = ("propulsive", "flapping", "none")  # rotorlyap.model.forward_trim.TRIM_TARGETS
+HINGE_SYMBOLS = ("flap", "lag", "pitch")  # rotorlyap.conventions.HINGES: the order of the state
+SIGNIFICANT = 4  # digits of a printed number
+MAX_LIST = 10_000  # values of one grid axis (a start:stop:step typo should not start a week of work)
+
+
+# ---------------------------------------------------------------------- argument types
 
 
 def _float_in(name: str, lo: float, hi: float, *, open_lo: bool = False):
@@ -61,22 +89,123 @@ def _scales(text: str) -> list[float]:
         raise argparse.ArgumentTypeError(f"--scales must be 6 numbers (deg, deg/rad), got {text!r}") from None
     if len(values) != 6 or not all(math.isfinite(v) and v > 0 for v in values):
         raise argparse.ArgumentTypeError(
-            f"--scales must be 6 positive numbers in deg and deg/rad (beta, zeta, theta and their rates), got {text!r}")
+            f"--scales must be 6 positive numbers in deg and deg/rad (flap, lag, pitch and their rates), got {text!r}")
     return values
+
+
+def _existing_file(text: str) -> Path:
+    path = Path(text)
+    if not path.is_file():
+        raise argparse.ArgumentTypeError(f"--params: no such file: {text!r}")
+    return path
+
+
+def _number_list(name: str, text: str, *, integer: bool = False) -> list:
+    """Numbers ``"a,b,c"`` or ``"start:stop:step"`` (stop included, decimal steps exact:
+    ``0:0.3:0.1`` gives 0, 0.1, 0.2, 0.3)."""
+    def number(t: str) -> Decimal:
+        try:
+            d = Decimal(t.strip())
+        except InvalidOperation:
+            raise argparse.ArgumentTypeError(
+                f"{name} must be numbers 'a,b,c' or a range 'start:stop:step', got {text!r}") from None
+        if not d.is_finite():
+            raise argparse.ArgumentTypeError(f"{name} values must be finite, got {text!r}")
+        return d
+
+    if ":" in text:
+        parts = text.split(":")
+        if len(parts) != 3:
+            raise argparse.ArgumentTypeError(f"{name} range must be 'start:stop:step', got {text!r}")
+        start, stop, step = (number(p) for p in parts)
+        if step <= 0 or stop < start:
+            raise argparse.ArgumentTypeError(
+                f"{name} range 'start:stop:step' needs step > 0 and stop >= start, got {text!r}")
+        count = int((stop - start) / step) + 1
+        if count > MAX_LIST:
+            raise argparse.ArgumentTypeError(f"{name} range gives {count} values, more than {MAX_LIST}: {text!r}")
+        values = [start + k * step for k in range(count)]
+    else:
+        values = [number(p) for p in text.split(",") if p.strip()]
+        if not values:
+            raise argparse.ArgumentTypeError(f"{name} needs at least one value, got {text!r}")
+    if integer:
+        if any(v != v.to_integral_value() for v in values):
+            raise argparse.ArgumentTypeError(f"{name} values must be integers, got {text!r}")
+        return [int(v) for v in values]
+    return [float(v) for v in values]
+
+
+def _float_list(name: str, lo: float, hi: float, *, open_lo: bool = False):
+    def parse(text: str) -> list[float]:
+        values = _number_list(name, text)
+        for v in values:
+            if not ((v > lo if open_lo else v >= lo) and v <= hi):
+                left = "(" if open_lo else "["
+                raise argparse.ArgumentTypeError(f"{name} values must lie in {left}{lo:g}, {hi:g}], got {text!r}")
+        return values
+    return parse
+
+
+def _name_list(name: str, choices: tuple[str, ...]):
+    def parse(text: str) -> list[str]:
+        values = [p.strip() for p in text.split(",") if p.strip()]
+        bad = [v for v in values if v not in choices]
+        if not values or bad:
+            raise argparse.ArgumentTypeError(
+                f"{name} must be a comma-separated list of {', '.join(choices)}, got {text!r}")
+        return values
+    return parse
+
+
+def _setting(text: str) -> tuple[str, list]:
+    """``NAME=LIST`` of ``--set``: a numeric field of BladeParameters and its values."""
+    from .analysis.sweep import grid_value_type, sweep_fields
+
+    name, sep, values = text.partition("=")
+    name = name.strip()
+    allowed = sweep_fields()
+    if not sep or name not in allowed:
+        raise argparse.ArgumentTypeError(
+            f"--set must be NAME=VALUES with NAME a numeric field of BladeParameters ({', '.join(allowed)}), "
+            f"got {text!r}")
+    return name, _number_list(f"--set {name}", values, integer=grid_value_type(name) is int)
+
+
+def _table_path(text: str) -> Path:
+    path = Path(text)
+    if path.suffix.lower() not in (".csv", ".json"):
+        raise argparse.ArgumentTypeError(f"--out must end in .csv or .json (the table's format), got {text!r}")
+    return path
+
+
+# ---------------------------------------------------------------------- the parser
+
+
+def _blade_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--params", type=_existing_file, default=None, metavar="FILE",
+                   help="the blade from a parameter file (TOML, BladeParameters.from_file); default: Table I")
+    p.add_argument("--cg", choices=CG_CHOICES, default=None,
+                   help="section C.G. position, a Table I case (default forward); with --params, given "
+                        "explicitly, it overrides the file's cg_position")
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``python -m rotorlyap``."""
+    from .conventions import MAX_ADVANCE_RATIO
+
     parser = argparse.ArgumentParser(
         prog="python -m rotorlyap",
         description="Technical stability of the Narkiewicz & Lucjanek (1989) rotor blade by "
                     "Liapunov's direct method.",
     )
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{analyse,figures}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{analyse,certify,sweep,figures}")
 
-    a = sub.add_parser("analyse", help="one stability analysis of a Table I case, printed as JSON",
-                       description="Run blade_stability for one Table I case and print the result as JSON.")
-    a.add_argument("--cg", choices=CG_CHOICES, default="forward", help="section C.G. position (Table I)")
+    a = sub.add_parser("analyse", help="one stability analysis of a blade, printed as JSON",
+                       description="Run blade_stability for one blade and print the result as JSON. "
+                                   "'certified' is true only for a numerical certificate: strict reading, "
+                                   "sound rule and every azimuth certified.")
+    _blade_options(a)
     a.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
                    help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
     a.add_argument("--A", type=_float_in("--A", 0.0, 1e3, open_lo=True), default=None,
@@ -97,6 +226,55 @@ def build_parser() -> argparse.ArgumentParser:
     a.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
                    help="quasi-random directions per sphere (strict reading)")
 
+    c = sub.add_parser("certify", help="certify the trimmed blade (rotorlyap.certify), printed as JSON",
+                       description="Trim the helicopter, take the blade's own steady motion, the quadratic "
+                                   "Liapunov function and the sound rule (rotorlyap.certify); print what is "
+                                   "certified, per hinge in deg and deg/s, as JSON.")
+    _blade_options(c)
+    c.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
+                   help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
+    c.add_argument("--condition", choices=CONDITIONS, default="propulsive",
+                   help="propulsive: the trimmed helicopter (default); flapping: hover collective, cyclic "
+                        "for zero flapping; none: the paper's hover controls")
+    c.add_argument("--A", type=_float_in("--A", 0.0, 1e3, open_lo=True), default=None,
+                   help="requested bound of the scaled norm (default 1; the sound rule reduces it until it holds)")
+    c.add_argument("--scales", type=_scales, default=None,
+                   help="6 norm scales a_i in deg and deg/rad, e.g. '2 2 1 2 0.5 5' (the default)")
+    c.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of the grid")
+    c.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
+                   help="quasi-random directions per sphere")
+
+    s = sub.add_parser("sweep", help="certify over a grid (mu, C.G., A, any parameter), one CSV/JSON table",
+                       description="Run the certificate (as the certify command) at every point of a "
+                                   "full-factorial grid and write one table, a row per point. Lists are "
+                                   "'a,b,c' or 'start:stop:step' (stop included). The table's columns: "
+                                   "condition, cg (if given), each --set in order, A (if given), mu (the last "
+                                   "varies fastest), then the results.")
+    s.add_argument("--params", type=_existing_file, default=None, metavar="FILE",
+                   help="the base blade from a parameter file (TOML); default: Table I")
+    s.add_argument("--cg-base", dest="cg_base", choices=CG_CHOICES, default=None,
+                   help="the base blade's C.G. case (Table I; with --params it overrides the file's)")
+    s.add_argument("--mu", type=_float_list("--mu", 0.0, MAX_ADVANCE_RATIO), default=[0.0],
+                   help="advance ratios, e.g. 0,0.1,0.2 or 0:0.3:0.05 (default 0)")
+    s.add_argument("--cg", type=_name_list("--cg", CG_CHOICES), default=None,
+                   help="C.G. cases to sweep, e.g. forward,backward")
+    s.add_argument("--A", type=_float_list("--A", 0.0, 1e3, open_lo=True), default=None,
+                   help="requested bounds of the scaled norm, e.g. 0.5,1")
+    s.add_argument("--set", type=_setting, action="append", default=[], metavar="NAME=VALUES",
+                   help="sweep a numeric field of BladeParameters (SI units), e.g. lag_damping=5000,10000; "
+                        "repeat for more fields")
+    s.add_argument("--condition", type=_name_list("--condition", CONDITIONS), default=["propulsive"],
+                   help="flight conditions, e.g. propulsive,none (default propulsive)")
+    s.add_argument("--out", type=_table_path, required=True, help="the table: FILE.csv or FILE.json")
+    s.add_argument("--workers", type=_int_at_least("--workers", 1), default=None,
+                   help="processes (or local Dask workers); default every core; 1 runs in this process")
+    s.add_argument("--scheduler", default=None, metavar="local|ADDRESS",
+                   help="run on Dask: 'local' (a local cluster) or a scheduler address tcp://host:port; "
+                        'needs pip install "dask[distributed]"')
+    s.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of each certificate")
+    s.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
+                   help="quasi-random directions per sphere")
+
     f = sub.add_parser("figures", help="regenerate the data (CSV) and PNGs of Figs 4-8 into a folder",
                        description="Regenerate the data (CSV) and pictures (PNG) of the paper's Figs 4-8.")
     f.add_argument("--out", type=Path, required=True, help="output folder (created if missing)")
@@ -104,17 +282,116 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _result_json(res, params, mu: float, args) -> dict:
-    deg = 180.0 / math.pi
+# ---------------------------------------------------------------------- shared helpers
+
+
+def _sig(value: float, digits: int = SIGNIFICANT) -> float:
+    """``value`` rounded to ``digits`` significant digits (a printed number without round-off)."""
+    v = float(value)
+    if v == 0.0 or not math.isfinite(v):
+        return 0.0 if v == 0.0 else v
+    return float(f"{v:.{digits - 1}e}")
+
+
+def _blade(params_file: Path | None, cg: str | None):
+    """The blade of ``--params``/``--cg`` and a description of it for the JSON's ``case``."""
+    from dataclasses import replace
+
+    from .model.parameters import CG_POSITIONS, BladeParameters
+
+    if params_file is None:
+        name = cg or "forward"
+        return BladeParameters.table_i(cg=name), {"params": "Table I", "cg": name, "cg_position": CG_POSITIONS[name]}
+    params = BladeParameters.from_file(params_file)
+    if cg is not None:
+        params = replace(params, cg_position=CG_POSITIONS[cg])
+    cg_position = params.cg_position
+    if isinstance(cg_position, (int, float)):
+        # the Table I case the file's C.G. is, if it is one
+        cg = cg or next((k for k, v in CG_POSITIONS.items() if v == cg_position), None)
+        shown = _sig(cg_position)
+    else:
+        shown = getattr(cg_position, "__name__", "a spanwise profile")
+    return params, {"params": str(params_file), "cg": cg, "cg_position": shown}
+
+
+def _per_hinge(radius: float, scales, omega: float) -> dict:
+    """``{flap|lag|pitch: {"deg", "deg_per_s"}}``: a radius of the scaled norm along each hinge
+    angle (scale a_i, rad) and rate (a_(i+3), rad/rad of azimuth, times Omega rad/s)."""
+    import numpy as np
+
+    a = np.degrees(np.asarray(scales, dtype=float)) * float(radius)
+    return {h: {"deg": _sig(a[i]), "deg_per_s": _sig(a[i + 3] * omega)} for i, h in enumerate(HINGE_SYMBOLS)}
+
+
+def _warn(warnings: list[str]) -> None:
+    for w in warnings:
+        print(f"warning: {w}", file=sys.stderr, flush=True)
+
+
+def _dump(data: dict) -> None:
+    json.dump(data, sys.stdout, indent=2)
+    sys.stdout.write("\n")
+
+
+# ---------------------------------------------------------------------- analyse
+
+
+def analyse_warnings(reading: str, rule: str, lyapunov: str, steady: str, mu: float) -> list[str]:
+    """The warnings of ``analyse`` for combinations that cannot certify technical stability.
+
+    Parameters
+    ----------
+    reading, rule, lyapunov, steady : str
+        The options (``rule`` as used: ``"sound"`` or ``"paper"``).
+    mu : float
+        Advance ratio, -.
+
+    Returns
+    -------
+    list of str
+        One sentence each; empty for a combination that can certify.
+    """
+    out = []
+    if reading == "practical":
+        out.append("--reading practical examines W and W' along the 12 signed hinge axes only: an indicator, "
+                   "not a certificate (--reading strict, the default, searches whole spheres)")
+    elif rule == "paper":  # the practical reading's own rule: its warning says enough
+        out.append("--rule paper (step 6 at each start azimuth, the paper's algorithm) is not implied by the "
+                   "theorem when anything depends on the azimuth: not a certificate (--rule sound checks "
+                   "condition (h) over the whole period)")
+    if lyapunov == "quadratic" and steady == "hover" and mu > 0.0:
+        out.append(f"--lyapunov quadratic about --steady hover at mu = {mu:g}: the hover equilibrium is not the "
+                   "blade's steady motion in forward flight, so nothing can be certified; use --steady periodic, "
+                   "or the certify command (the trimmed helicopter and its own periodic motion)")
+    return out
+
+
+def _kind(reading: str, rule: str) -> str:
+    """What a run of this reading and rule can give."""
+    if reading == "practical":
+        return "practical reading (the 12 signed axes): an indicator, never a certificate"
+    if rule == "paper":
+        return "strict reading, paper rule (the paper's algorithm): never a certificate"
+    return "strict reading, sound rule: a numerical certificate where certified"
+
+
+def _result_json(res, params, case: dict, args, warnings: list[str]) -> dict:
+    import numpy as np
+
     r6 = lambda a: [round(float(v), 6) for v in np.asarray(a).ravel()]  # noqa: E731
+    lam_min = float(np.min(res.lambda0)) if res.lambda0.size else 0.0
+    certified = bool(res.reading == "strict" and res.rule == "sound" and np.all(res.stable))
     return {
-        "case": {"cg": args.cg, "mu": mu, "collective_deg": round(float(params.collective) * deg, 4),
+        "case": {**case, "mu": args.mu, "collective_deg": _sig(math.degrees(params.collective)),
                  "steady": args.steady, "lyapunov": args.lyapunov},
+        # a numerical certificate only: the paper's step 6 at one azimuth is not implied by the
+        # theorem when anything depends on psi, and the practical reading samples 12 directions
+        "certified": certified,
+        "kind": _kind(res.reading, res.rule),
         "reading": res.reading,
         "rule": res.rule,
-        # the paper's step 6 at one azimuth is not implied by the theorem when anything depends
-        # on psi: only the sound rule's strict reading is a (numerical) certificate
-        "certificate": res.reading == "strict" and res.rule == "sound",
+        "warnings": warnings,
         "A_requested": res.A_requested,
         "A": round(float(res.A), 6),
         "alpha": round(float(res.alpha), 6),
@@ -122,7 +399,9 @@ def _result_json(res, params, mu: float, args) -> dict:
         "n_stable": int(res.stable.sum()),
         "n_psi": int(res.psi.size),
         "psi_deg": r6(np.degrees(res.psi)),
-        "lambda0": r6(res.lambda0),
+        "lambda0_scaled_norm": r6(res.lambda0),
+        "lambda0_min_scaled_norm": _sig(lam_min),
+        "lambda0_per_hinge": _per_hinge(lam_min, res.scales, params.rotor_speed),
         "max_dW": r6(res.max_dW),
         "stable": [bool(s) for s in res.stable],
         "message": res.message,
@@ -130,14 +409,18 @@ def _result_json(res, params, mu: float, args) -> dict:
 
 
 def _analyse(args) -> int:
+    import numpy as np
+
     from .analysis.functions import quadratic_function
     from .analysis.stability import blade_stability
     from .conventions import PAPER_TEST_DISTURBANCES
     from .model.blade import Blade
-    from .model.parameters import BladeParameters
     from .model.steady import periodic_motion, tabulate_motion
 
-    params = BladeParameters.table_i(cg=args.cg)
+    params, case = _blade(args.params, args.cg)
+    rule = args.rule or ("sound" if args.reading == "strict" else "paper")
+    warnings = analyse_warnings(args.reading, rule, args.lyapunov, args.steady, args.mu)
+    _warn(warnings)
     params = Blade(params, 0.0).params  # trimmed collective, kept at every mu
     # the periodic motion tabulated once (Hermite, 4096 azimuths): its Fourier series would be
     # summed again for every state of the searches
@@ -145,16 +428,147 @@ def _analyse(args) -> int:
               else None)
     lyapunov = quadratic_function if args.lyapunov == "quadratic" else None
     scales = None if args.scales is None else np.radians(args.scales)
-    print(f"analysing: cg={args.cg}, mu={args.mu:g}, {args.reading} reading ...", file=sys.stderr, flush=True)
+    print(f"analysing: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.reading} reading ...",
+          file=sys.stderr, flush=True)
     res = blade_stability(
         params, args.mu, lyapunov=lyapunov, A=args.A, scales=scales, n_psi=args.n_psi,
         steady=steady, n_sphere=args.n_sphere,
         test_disturbances=PAPER_TEST_DISTURBANCES if args.reading == "practical" else None,
         rule=args.rule,
     )
-    json.dump(_result_json(res, params, args.mu, args), sys.stdout, indent=2)
-    sys.stdout.write("\n")
+    _dump(_result_json(res, params, case, args, warnings))
     return 0
+
+
+# ---------------------------------------------------------------------- certify
+
+
+def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
+    """The JSON object of the ``certify`` command: a :class:`rotorlyap.Certificate`, 4 significant digits.
+
+    Parameters
+    ----------
+    cert : Certificate
+    case : dict
+        What was certified (the blade, the C.G.), copied into ``case``.
+    n_psi, n_sphere : int
+        The search's sizes, recorded.
+
+    Returns
+    -------
+    dict
+        ``certified``; ``bound`` and ``start_region`` (scaled norm); ``start_region_per_hinge``
+        and ``bound_per_hinge`` (``{flap|lag|pitch: {"deg", "deg_per_s"}}``);
+        ``growth_rate_per_rad``; ``trim`` (controls and shaft tilt in deg, ``CT_over_sigma``);
+        ``message`` (which says "numerical certificate" where one was given).
+    """
+    import numpy as np
+
+    p = cert.trim.params
+    collective, cyc_c, cyc_s = cert.trim.controls_deg
+    omega = p.rotor_speed
+    return {
+        "case": {**case, "mu": cert.mu, "condition": cert.condition},
+        "certified": bool(cert.certified),
+        "kind": "strict reading, sound rule, quadratic function about the trim's steady motion: a numerical "
+                "certificate where certified",
+        "bound": _sig(cert.bound),
+        "start_region": _sig(cert.start_region),
+        "start_region_per_hinge": _per_hinge(cert.start_region, cert.scales, omega),
+        "bound_per_hinge": _per_hinge(cert.bound, cert.scales, omega),
+        "growth_rate_per_rad": _sig(cert.growth_rate),
+        "trim": {"collective_deg": _sig(collective), "cyclic_cos_deg": _sig(cyc_c), "cyclic_sin_deg": _sig(cyc_s),
+                 "shaft_tilt_deg": _sig(math.degrees(cert.trim.shaft_tilt)),
+                 "CT_over_sigma": _sig(cert.trim.thrust_coefficient / p.solidity)},
+        "scales_deg": [_sig(v) for v in np.degrees(cert.scales)],
+        "n_psi": n_psi,
+        "n_sphere": n_sphere,
+        "message": cert.message,
+    }
+
+
+def _certify(args) -> int:
+    import numpy as np
+
+    from .analysis.certify import certify
+
+    params, case = _blade(args.params, args.cg)
+    scales = None if args.scales is None else np.radians(args.scales)
+    print(f"certifying: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.condition} ...",
+          file=sys.stderr, flush=True)
+    cert = certify(params, args.mu, condition=args.condition, A=args.A, scales=scales, n_psi=args.n_psi,
+                   n_sphere=args.n_sphere)
+    _dump(certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere))
+    return 0
+
+
+# ---------------------------------------------------------------------- sweep
+
+
+def progress_bar(stream: TextIO = sys.stderr, width: int = 30) -> Callable[[int, int], None]:
+    """A ``progress(done, total)`` hook drawing ``[#####     ] 12/40  35 s`` on ``stream``: redrawn on one
+    line (``\\r``) on a terminal, a line every 5 % otherwise (a log file)."""
+    start = time.perf_counter()
+    last = [-1]
+
+    def draw(done: int, total: int) -> None:
+        filled = width * done // max(total, 1)
+        line = f"[{'#' * filled}{' ' * (width - filled)}] {done}/{total}  {time.perf_counter() - start:.0f} s"
+        if stream.isatty():
+            stream.write("\r" + line + ("\n" if done >= total else ""))
+        else:
+            step = 20 * done // max(total, 1)
+            if step == last[0] and done < total:
+                return
+            last[0] = step
+            stream.write(line + "\n")
+        stream.flush()
+    return draw
+
+
+def sweep_grid(args) -> dict[str, list]:
+    """The grid of the ``sweep`` command's options, in the table's column order: condition, cg, each
+    ``--set``, A, mu."""
+    grid: dict[str, list] = {"condition": args.condition}
+    if args.cg is not None:
+        grid["cg"] = args.cg
+    for name, values in args.set:
+        if name in grid:
+            raise ValueError(f"--set {name} is given twice: give all its values in one --set {name}=a,b,c")
+        if name == "cg_position" and args.cg is not None:
+            raise ValueError("--cg (Table I cases) and --set cg_position (fractions of chord) cannot be swept together")
+        grid[name] = values
+    if args.A is not None:
+        grid["A"] = args.A
+    grid["mu"] = args.mu
+    return grid
+
+
+def _sweep(args) -> int:
+    from .analysis.sweep import available_cores, sweep
+
+    params, case = _blade(args.params, args.cg_base)
+    grid = sweep_grid(args)
+    n = math.prod(len(v) for v in grid.values())
+    if args.scheduler:
+        where = f"the Dask scheduler {args.scheduler}"
+    elif args.workers == 1 or n == 1:
+        where = "this process"
+    else:
+        where = f"{min(args.workers or available_cores(), n)} processes"
+    print(f"sweeping: {case['params']}, {n} point{'s' if n != 1 else ''} on {where} ...", file=sys.stderr, flush=True)
+    result = sweep(params, grid, n_psi=args.n_psi, workers=args.workers, scheduler=args.scheduler,
+                   progress=progress_bar(sys.stderr), n_sphere=args.n_sphere)
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    path = result.write(args.out)
+    errors = sum(1 for e in result.column("error") if e)
+    print(path)
+    print(f"certified {result.n_certified} of {len(result)} points" + (f" ({errors} failed: see the error column)"
+                                                                         if errors else ""))
+    return 0
+
+
+# ---------------------------------------------------------------------- figures
 
 
 def _figures(args) -> int:
@@ -172,14 +586,33 @@ def _figures(args) -> int:
     return 0
 
 
+_COMMANDS: dict[str, Callable[[Any], int]] = {"analyse": _analyse, "certify": _certify, "sweep": _sweep,
+                                              "figures": _figures}
+
+
+def _one_blas_thread() -> None:
+    """One BLAS thread unless the environment says otherwise, set before numpy is first imported
+    (afterwards it has no effect on this process). The searches call BLAS on tiny arrays
+    (L-BFGS-B on 6 unknowns, 6 x 6 products), where OpenBLAS's threads give nothing and wait for a
+    busy core: on two cores ``certify --n-psi 6 --n-sphere 64`` took 3.7 s with two threads and
+    3.4 s with one when idle, 12.6 s and 8.0 s with the other core busy. The worker processes of
+    ``sweep`` run one thread each anyway, and so the in-process route gives their numbers."""
+    if "numpy" not in sys.modules:
+        for name in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+            os.environ.setdefault(name, "1")
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point; returns the exit status."""
+    _one_blas_thread()
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
-        return _analyse(args) if args.command == "analyse" else _figures(args)
-    except (ValueError, RuntimeError) as exc:
-        print(f"python -m rotorlyap {args.command}: error: {exc}", file=sys.stderr)
-        return 1
+        return _COMMANDS[args.command](args)
     except BrokenPipeError:  # output piped into a program that stopped reading (e.g. head)
         return 0
+    except (ValueError, TypeError, RuntimeError, ImportError, OSError) as exc:
+        # bad values (a parameter file, a grid), a trim that does not converge, a missing optional
+        # dependency, a table that cannot be written
+        print(f"python -m rotorlyap {args.command}: error: {exc}", file=sys.stderr)
+        return 1

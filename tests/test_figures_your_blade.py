@@ -226,3 +226,82 @@ def test_plot_harmonics_returns_a_closed_figure_of_three_panels_with_three_lines
     assert all(len(ax.get_lines()) == 3 for ax in fig.axes)
     assert np.allclose(fig.axes[1].get_lines()[0].get_ydata(), data.harmonics_deg[:, 1, 0])
     assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == ["mean", "1st cosine", "1st sine"]
+
+
+# --- a real blade: its file, its certificates, a sweep -------------------------------------
+
+from rotorlyap.analysis.sweep import RESULT_COLUMNS, SweepResult  # noqa: E402
+from rotorlyap.model.parameters import EXAMPLE_FILES  # noqa: E402
+
+
+def test_read_blade_names_the_file_not_its_folder_and_lists_what_it_left_to_the_template():
+    """The chapter prints the same on any machine: the warning carries the file's name only; the
+    fields left out are exactly the blade fields the file has no key for."""
+    b = your_blade.read_blade(EXAMPLE_FILES["sa330-puma"])
+    assert b.name == "sa330_puma.toml"
+    assert b.left_out == ("pitch_flap_coupling", "pitch_stiffness", "lag_damping")
+    assert str(EXAMPLE_FILES["sa330-puma"].parent) not in b.warning
+    assert b.warning.startswith("sa330_puma.toml leaves out 3 of the 22 blade fields")
+    table = b.markdown()
+    assert "| `pitch_flap_coupling` | -0.4 | - | template: Table I (tan delta3) |" in table
+    assert "| `radius` | 7.49 | m | the file: PumaBladeData |" in table
+    assert "left to the template: pitch_flap_coupling, pitch_stiffness, lag_damping" in b.summary()
+
+
+def _certificate(mu, certified):
+    """A stand-in for a Certificate: the fields the table reads."""
+    per = {"flap": (0.234, 6.44), "lag": (0.2, 1.6), "pitch": (0.11, 16.0)}
+    return SimpleNamespace(mu=mu, certified=certified, growth_rate=-0.1234, start_region_per_hinge=per,
+                           bound_per_hinge={h: (10 * a, 10 * b) for h, (a, b) in per.items()},
+                           summary=lambda: f"mu = {mu:g}")
+
+
+def test_certificate_table_reads_each_hinge_and_shows_no_region_where_nothing_is_certified():
+    t = your_blade.certificate_table([_certificate(0.0, True), _certificate(0.3, False)])
+    rows = t.markdown().splitlines()
+    assert rows[2] == "| 0 | certified | 0.23 | 0.20 | 0.11 | 2.34 | 2.00 | 1.10 | -0.123 |"
+    assert rows[3] == "| 0.3 | not certified | - | - | - | - | - | - | -0.123 |"
+    facts = t.facts("x")
+    assert facts["x_mu00_flap_start"] == "0.23" and facts["x_mu00_flap_rate_start"] == "6.4"
+    assert facts["x_mu30_verdict"] == "not certified" and facts["x_mu00_flap_bound"] == "2.34"
+    with pytest.raises(ValueError, match="at least one certificate"):
+        your_blade.certificate_table([])
+
+
+def _sweep_result(missing=False):
+    columns = ("k", "d") + RESULT_COLUMNS
+    rows = []
+    for k in (1.0, 2.0):
+        for d in (-0.1, 0.0, 0.1):
+            if missing and (k, d) == (2.0, 0.1):
+                continue
+            ok = d > -0.1
+            numbers = {c: None for c in RESULT_COLUMNS}
+            numbers.update(certified=ok, growth_rate_per_rad=d - 0.2 * k, start_flap_deg=(1 + d) if ok else 0.0,
+                           error="")
+            rows.append((k, d) + tuple(numbers[c] for c in RESULT_COLUMNS))
+    return SweepResult(columns, tuple(rows))
+
+
+def test_sweep_figure_data_arranges_a_full_grid_by_line_and_refuses_a_partial_one():
+    """Each line is one value of the series column, x sorted, the growth and the start region
+    taken from their columns; nothing certified shows as start region 0."""
+    data = your_blade.sweep_figure_data(_sweep_result(), "d", "k")
+    assert data.series == (1.0, 2.0) and data.x.tolist() == [-0.1, 0.0, 0.1]
+    np.testing.assert_allclose(data.growth[1], [-0.5, -0.4, -0.3])
+    np.testing.assert_allclose(data.start_flap_deg[0], [0.0, 1.0, 1.1])
+    assert data.certified.tolist() == [[False, True, True], [False, True, True]]
+    assert "k = 1: certified at [0.0, 0.1]" in data.summary()
+    with pytest.raises(ValueError, match="not a full grid"):
+        your_blade.sweep_figure_data(_sweep_result(missing=True), "d", "k")
+    with pytest.raises(ValueError, match="no column 'q'"):
+        your_blade.sweep_figure_data(_sweep_result(), "q", "k")
+
+
+def test_plot_sweep_draws_two_panels_with_a_line_and_markers_per_series():
+    fig = your_blade.plot_sweep(your_blade.sweep_figure_data(_sweep_result(), "d", "k"), x_label="d", series_label="k")
+    a, b = fig.axes
+    assert len(a.get_legend().get_texts()) == 2
+    assert a.get_ylabel() == "largest Floquet real part (per rad)"
+    assert b.get_ylabel() == "certified flap start region (deg)"
+    assert not plt.fignum_exists(fig.number)

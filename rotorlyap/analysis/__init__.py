@@ -7,13 +7,16 @@
 * :mod:`~rotorlyap.analysis.floquet`: Floquet multipliers of the blade about its steady motion,
   followed over the advance ratio;
 * :mod:`~rotorlyap.analysis.certify`: :func:`certify`, the trim, the steady motion, the quadratic
-  function and the sound rule in one call.
+  function and the sound rule in one call;
+* :mod:`~rotorlyap.analysis.sweep`: :func:`sweep`, certificates over a grid of blades and
+  conditions, on every core or a Dask cluster, as one table.
 """
 
 from .certify import Certificate, certify
 from .floquet import blade_floquet, floquet_sweep
 from .functions import energy_function, optimised_quadratic_function, quadratic_function
 from .stability import blade_stability
+from .sweep import SweepResult, sweep
 
-__all__ = ["Certificate", "blade_floquet", "blade_stability", "certify", "energy_function", "floquet_sweep",
-           "optimised_quadratic_function", "quadratic_function"]
+__all__ = ["Certificate", "SweepResult", "blade_floquet", "blade_stability", "certify", "energy_function",
+           "floquet_sweep", "optimised_quadratic_function", "quadratic_function", "sweep"]

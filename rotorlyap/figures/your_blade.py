@@ -13,7 +13,12 @@ quotes numbers in its text, ``facts()`` (``{glue name: value}``, rounded):
 * :func:`both_readings`: the direct method in its practical and strict readings, both blades;
 * :func:`worst_state`: where the strict reading found ``W' > 0``;
 * :func:`harmonic_data` with :func:`plot_harmonics`: the first harmonics of the periodic
-  motion against the advance ratio.
+  motion against the advance ratio;
+* :func:`read_blade`: a blade from a parameter file, with the fields it left to the template;
+* :func:`certificate_table`: certificates (:func:`rotorlyap.certify`) read per hinge;
+* :func:`sweep_figure_data` with :func:`plot_sweep`: a sweep
+  (:func:`rotorlyap.analysis.sweep.sweep`) over two parameters drawn as linear stability and
+  certified start region.
 
 Angles are printed in degrees, rates and frequencies per revolution (units of ``Omega``).
 """
@@ -43,6 +48,8 @@ __all__ = [
     "Readings", "both_readings",
     "WorstState", "worst_state",
     "HarmonicData", "harmonic_data", "plot_harmonics",
+    "BladeFile", "read_blade", "CertificateTable", "certificate_table",
+    "SweepFigureData", "sweep_figure_data", "plot_sweep",
 ]
 
 LABELS: tuple[str, str] = ("Table I neutral", "variant")
@@ -509,4 +516,279 @@ def plot_harmonics(data: HarmonicData):
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("harmonic (deg)")
     axes[0].legend(fontsize=8)
+    return finish(fig)
+
+
+# --------------------------------------------------------------------------------------
+# A real blade: its file, its certificates, a sweep
+# --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class BladeFile:
+    """A blade read from a parameter file, with what the file left to the template.
+
+    Attributes
+    ----------
+    params : BladeParameters
+        The blade.
+    name : str
+        The file's name (without its folder, so that the chapter prints the same on any machine).
+    left_out : tuple of str
+        The blade fields the file does not give (they take the Table I template's values).
+    warning : str
+        The reader's :class:`~rotorlyap.errors.TemplateValuesWarning`, with the file's name only
+        ("" if the file gives every blade field).
+    sources : dict
+        The file's ``[about.sources]``: ``{field: citation}``.
+    """
+
+    params: BladeParameters
+    name: str
+    left_out: tuple[str, ...]
+    warning: str
+    sources: dict = dataclasses.field(default_factory=dict)
+
+    def markdown(self) -> str:
+        """The blade fields as a Markdown table: field, value, unit, and 'given' or the template's source."""
+        from ..model.parameters import BLADE_FIELDS
+        from .export import format_value, markdown_table
+        rows = []
+        for name, value, unit, source in parameter_table(self.params):  # value: as given, 4 digits
+            if name in BLADE_FIELDS:
+                origin = (f"template: {source.split(': ', 1)[-1]}" if name in self.left_out else
+                          f"the file: {self.sources[name]}" if name in self.sources else "the file")
+                shown = (value if isinstance(value, str) else
+                         "(" + ", ".join(f"{v:.4g}" for v in value) + ")" if isinstance(value, tuple) else
+                         f"{value:.5g}" if isinstance(value, float) else format_value(value))
+                rows.append((f"`{name}`", shown, unit, origin))
+        return markdown_table(("field", "value", "unit", "source"), rows)
+
+    def summary(self) -> str:
+        """The file's name, the blade's key numbers and the fields left to the template."""
+        p = self.params
+        return "\n".join([
+            f"{self.name}: R = {p.radius:g} m, c = {p.chord:g} m, {p.n_blades} blades, Omega = {p.rotor_speed:.2f} rad/s, "
+            f"{p.helicopter_mass:g} kg",
+            f"Lock number {p.lock_number:.1f}, solidity {p.solidity:.4f}, C_T/sigma in hover {p.blade_loading:.3f}",
+            f"left to the template: {', '.join(self.left_out) if self.left_out else 'nothing'}",
+        ])
+
+
+def read_blade(path) -> BladeFile:
+    """Read a parameter file (:meth:`BladeParameters.from_file`) and keep its template warning.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+
+    Returns
+    -------
+    BladeFile
+    """
+    import warnings
+    from pathlib import Path
+
+    from ..errors import TemplateValuesWarning
+    from ..model.parameters import BLADE_FIELDS
+
+    path = Path(path)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", TemplateValuesWarning)
+        params = BladeParameters.from_file(path)
+    texts = [str(w.message).replace(str(path), path.name) for w in caught
+             if issubclass(w.category, TemplateValuesWarning)]
+    import tomllib
+    with open(path, "rb") as fh:
+        data = tomllib.load(fh)
+    sources = dict(data.get("about", {}).get("sources", {}))
+    return BladeFile(params=params, name=path.name, left_out=tuple(n for n in BLADE_FIELDS if n not in data),
+                     warning="\n".join(texts), sources=sources)
+
+
+@dataclass(frozen=True)
+class CertificateTable:
+    """Certificates of one blade at several advance ratios, read per hinge.
+
+    Attributes
+    ----------
+    certificates : tuple of Certificate
+        From :func:`rotorlyap.certify`, in the order to print.
+    """
+
+    certificates: tuple
+
+    def markdown(self) -> str:
+        """One row per certificate: mu, the verdict, then the start region and the bound along
+        the flap, lag and pitch angles (deg, two decimals; "-" where nothing is certified) and the
+        largest Floquet real part."""
+        from .export import markdown_table
+        rows = []
+        for c in self.certificates:
+            s, b = c.start_region_per_hinge, c.bound_per_hinge
+            region = ([f"{s[h][0]:.2f}" for h in HINGES] + [f"{b[h][0]:.2f}" for h in HINGES] if c.certified
+                      else ["-"] * 6)
+            rows.append((f"{c.mu:g}", "certified" if c.certified else "not certified", *region,
+                         f"{c.growth_rate:.3f}"))
+        return markdown_table(("mu", "verdict", "start: flap (deg)", "start: lag (deg)", "start: pitch (deg)",
+                               "bound: flap (deg)", "bound: lag (deg)", "bound: pitch (deg)",
+                               "largest Floquet real part (per rad)"), rows)
+
+    def summary(self) -> str:
+        """Each certificate's own three-line summary."""
+        return "\n".join(c.summary() for c in self.certificates)
+
+    def facts(self, prefix: str) -> dict:
+        """``{prefix_mu<k>_<quantity>: text}``: the verdict, the flap and pitch start regions (deg, two
+        decimals), the flap bound (deg) and the flap-rate start region (deg/s, one decimal), k the
+        advance ratio times 100."""
+        out = {}
+        for c in self.certificates:
+            key = f"{prefix}_mu{round(100 * c.mu):02d}"
+            s, b = c.start_region_per_hinge, c.bound_per_hinge
+            out[f"{key}_verdict"] = "certified" if c.certified else "not certified"
+            out[f"{key}_flap_start"] = f"{s['flap'][0]:.2f}"
+            out[f"{key}_flap_rate_start"] = f"{s['flap'][1]:.1f}"
+            out[f"{key}_pitch_start"] = f"{s['pitch'][0]:.2f}"
+            out[f"{key}_flap_bound"] = f"{b['flap'][0]:.2f}"
+            out[f"{key}_growth"] = f"{c.growth_rate:.3f}"
+        return out
+
+
+def certificate_table(certificates) -> CertificateTable:
+    """Gather certificates (:func:`rotorlyap.certify`) for :class:`CertificateTable`.
+
+    Raises
+    ------
+    ValueError
+        If ``certificates`` is empty.
+    """
+    certificates = tuple(certificates)
+    if not certificates:
+        raise ValueError("certificate_table needs at least one certificate")
+    return CertificateTable(certificates)
+
+
+@dataclass(frozen=True)
+class SweepFigureData:
+    """A sweep (:func:`rotorlyap.analysis.sweep.sweep`) over one parameter, one line per value of a
+    second: the largest Floquet real part and the certified start region along the flap angle.
+
+    Attributes
+    ----------
+    x_name, series_name : str
+        The swept parameter (x axis) and the one that labels the lines.
+    x : numpy.ndarray
+        The values of ``x_name``, shape (n,).
+    series : tuple
+        The values of ``series_name``, one per line.
+    growth : numpy.ndarray
+        Largest real part of the Floquet exponents, per rad, shape (len(series), n).
+    start_flap_deg : numpy.ndarray
+        Start region along the flap angle, deg (0 where nothing is certified), same shape.
+    certified : numpy.ndarray of bool
+        Same shape.
+    """
+
+    x_name: str
+    series_name: str
+    x: np.ndarray
+    series: tuple
+    growth: np.ndarray
+    start_flap_deg: np.ndarray
+    certified: np.ndarray
+
+    def export(self) -> dict:
+        """Columns for :func:`rotorlyap.figures.export.figure_csv`: x, then per line its growth
+        rate, start region and verdict."""
+        out = {self.x_name: self.x}
+        for k, s in enumerate(self.series):
+            out[f"growth_per_rad_{self.series_name}_{s:g}"] = self.growth[k]
+            out[f"start_flap_deg_{self.series_name}_{s:g}"] = self.start_flap_deg[k]
+            out[f"certified_{self.series_name}_{s:g}"] = self.certified[k].astype(int)
+        return out
+
+    def summary(self) -> str:
+        """Per line: the x values certified, the growth rates (3 decimals) and the flap start
+        regions (deg, 2 decimals)."""
+        lines = [f"{self.x_name}: {[float(v) for v in self.x]}"]
+        for k, s in enumerate(self.series):
+            lines.append(f"{self.series_name} = {s:g}: certified at {[float(v) for v in self.x[self.certified[k]]]}")
+            lines.append(f"  growth per rad: {np.round(self.growth[k], 3).tolist()}")
+            lines.append(f"  flap start (deg): {np.round(self.start_flap_deg[k], 2).tolist()}")
+        return "\n".join(lines)
+
+
+def sweep_figure_data(result, x_name: str, series_name: str) -> SweepFigureData:
+    """Arrange a two-parameter sweep's table for :func:`plot_sweep`.
+
+    Parameters
+    ----------
+    result : rotorlyap.analysis.sweep.SweepResult
+        A full grid over ``x_name`` and ``series_name`` (and nothing else that varies).
+    x_name, series_name : str
+        Two of its grid columns.
+
+    Returns
+    -------
+    SweepFigureData
+
+    Raises
+    ------
+    ValueError
+        If a column is missing or the grid is not full.
+    """
+    for name in (x_name, series_name):
+        if name not in result.columns:
+            raise ValueError(f"the sweep has no column {name!r}; its columns are {result.columns}")
+    xs, ss = result.column(x_name), result.column(series_name)
+    x = np.array(sorted(set(xs)), dtype=float)
+    series = tuple(sorted(set(ss)))
+    shape = (len(series), x.size)
+    growth, start, ok = np.full(shape, np.nan), np.zeros(shape), np.zeros(shape, dtype=bool)
+    seen = np.zeros(shape, dtype=bool)
+    for xv, sv, g, st, c in zip(xs, ss, result.column("growth_rate_per_rad"), result.column("start_flap_deg"),
+                                result.column("certified")):
+        i, j = series.index(sv), int(np.searchsorted(x, xv))
+        seen[i, j] = True
+        growth[i, j] = np.nan if g is None else g
+        start[i, j] = 0.0 if (st is None or not c) else st
+        ok[i, j] = bool(c)
+    if not seen.all():
+        raise ValueError(f"the sweep is not a full grid over {x_name} and {series_name}")
+    return SweepFigureData(x_name=x_name, series_name=series_name, x=x, series=series, growth=growth,
+                           start_flap_deg=start, certified=ok)
+
+
+def plot_sweep(data: SweepFigureData, *, x_label: str, series_label: str):
+    """Two panels against the swept parameter: (a) the largest Floquet real part (per rad; above 0
+    the linearised blade is unstable and nothing can be certified), (b) the certified start region
+    along the flap angle (deg); filled markers certified, crosses not. One line per series value,
+    told apart by colour, marker and line style.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        7.5 x 3 in, closed in pyplot.
+    """
+    fig, (ax1, ax2) = subplots(1, 2, figsize=(7.5, 3.0), sharex=True)
+    styles = (("C0", "o", "-"), ("C1", "s", "--"), ("C2", "^", ":"), ("C3", "D", "-."))
+    for k, s in enumerate(data.series):
+        colour, marker, line = styles[k % len(styles)]
+        label = f"{series_label} = {s:g}"
+        ax1.plot(data.x, data.growth[k], line, color=colour, marker=marker, ms=4, label=label)
+        ax2.plot(data.x, data.start_flap_deg[k], line, color=colour, lw=1)
+        ok = data.certified[k]
+        ax2.plot(data.x[ok], data.start_flap_deg[k][ok], marker, color=colour, ms=5, ls="none")
+        ax2.plot(data.x[~ok], data.start_flap_deg[k][~ok], "x", color=colour, ms=6, ls="none", clip_on=False)
+    ax1.axhline(0.0, color="k", lw=0.8)
+    ax1.set_ylabel("largest Floquet real part (per rad)")
+    ax1.set_title("(a) linear stability", fontsize=10)
+    ax2.set_ylabel("certified flap start region (deg)")
+    ax2.set_title("(b) the certificate (x: none)", fontsize=10)
+    for ax in (ax1, ax2):
+        ax.set_xlabel(x_label)
+        ax.grid(alpha=0.3)
+    ax2.set_ylim(bottom=0.0)
+    ax1.legend(fontsize=8)
     return finish(fig)
