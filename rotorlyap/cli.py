@@ -302,7 +302,15 @@ def _blade(params_file: Path | None, cg: str | None):
     if params_file is None:
         name = cg or "forward"
         return BladeParameters.table_i(cg=name), {"params": "Table I", "cg": name, "cg_position": CG_POSITIONS[name]}
-    params = BladeParameters.from_file(params_file)
+    import warnings as _warnings
+
+    from .errors import TemplateValuesWarning
+
+    with _warnings.catch_warnings(record=True) as caught:
+        _warnings.simplefilter("always", TemplateValuesWarning)
+        params = BladeParameters.from_file(params_file)
+    # the file's fields left to the template: one line on stderr, like the other warnings
+    _warn([str(w.message) for w in caught if issubclass(w.category, TemplateValuesWarning)])
     if cg is not None:
         params = replace(params, cg_position=CG_POSITIONS[cg])
     cg_position = params.cg_position

@@ -118,6 +118,18 @@ def test_a_bad_parameter_file_gives_a_message_and_exit_status_1(capsys, tmp_path
     assert "python -m rotorlyap analyse: error:" in err and "bad.toml" in err
 
 
+def test_a_file_that_leaves_blade_fields_to_the_template_warns_on_stderr(capsys, tmp_path):
+    """The file's fields left to the template are named in a 'warning:' line on stderr (the JSON on
+    stdout stays parseable)."""
+    path = tmp_path / "short.toml"
+    path.write_text('schema = "rotorlyap.blade/1"\nlag_damping = 8000.0\n')
+    assert main(["analyse", "--params", str(path), "--n-psi", "2", "--n-sphere", "8", "--A", "0.5"]) == 0
+    out = capsys.readouterr()
+    assert "warning: " in out.err and "short.toml leaves out 21 of the 22 blade fields" in out.err
+    assert "pitch_flap_coupling = -0.4" in out.err
+    json.loads(out.out)
+
+
 # ---------------------------------------------------------------------- certify
 
 
