@@ -154,3 +154,18 @@ def test_chapters_are_prose_with_calls_into_the_package(path):
     private = sorted({m.group(0) for c in nb["cells"] if c["cell_type"] == "code"
                       for m in re.finditer(r"\b[a-z_][a-z0-9_]*\._[a-zA-Z]\w*", "".join(c["source"]))})
     assert not private, f"{path.name} uses private names of the package: {private}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_code_is_hidden_where_it_is_not_the_lesson_and_glue_is_never_shown(path):
+    """A reader of the HTML sees prose, tables and figures: in a chapter whose code is not the
+    lesson every code cell is hidden behind a toggle (``hide-input``) or removed
+    (``remove-input``); in every chapter a cell shown as it is never calls ``glue`` (gluing numbers
+    for the text is bookkeeping, done in a removed cell)."""
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    shown = [c for c in nb["cells"] if c["cell_type"] == "code"
+             and not {"hide-input", "remove-input", "remove-cell"} & set(c.get("metadata", {}).get("tags", []))]
+    if path.name not in CODE_IS_THE_LESSON:
+        assert not shown, f"{path.name}: {len(shown)} code cells shown (tag them hide-input or remove-input)"
+    glued = [k for k, c in enumerate(shown) if re.search(r"\bglue(_facts)?\(", "".join(c["source"]))]
+    assert not glued, f"{path.name}: shown code cells call glue: {glued}"
