@@ -37,6 +37,10 @@ What is checked, page by page
 * offline: every request is to a ``file:``/``data:`` URL, none failed, no uncaught JavaScript
   exception;
 * the figures of the method chapters each link their data as a CSV file;
+* fit: no element of the text column (printed output, code, table, display math, image) is
+  wider than the column or hides part of itself behind a scroll bar, at the 1280 px window
+  the screenshots are taken at;
+* no placeholder is left in the text ("to come", "TODO", "FIXME", "TBD", "XXX");
 * a screenshot of the whole page is saved under ``_build/screenshots/`` (same path as the
   page, ``.png``) for a person to look at.
 
@@ -166,7 +170,23 @@ COLLECT = r"""
   const figures = [...document.querySelectorAll('figure, div.figure')].map(f => ({
       id: f.id || (f.querySelector('[id]') || {}).id || '',
       csv: [...f.querySelectorAll('a[href]')].map(a => a.getAttribute('href')).filter(h => /\.csv$/.test(h))}));
+  // what a reader sees cut off: an element of the text column wider than the column, or wider
+  // than its own box (content behind a scroll bar): printed outputs, code, tables, display math
+  const column = document.querySelector('article') || document.body;
+  const right = column.getBoundingClientRect().right;
+  const overflowing = [];
+  for (const el of column.querySelectorAll('pre, table, div.math, mjx-container[display="true"], img, .cell_output')) {
+    if (!el.checkVisibility()) continue;
+    const hidden = el.scrollWidth - el.clientWidth;
+    const beyond = el.getBoundingClientRect().right - right;
+    if (hidden > 1 || beyond > 1)
+      overflowing.push({tag: el.tagName.toLowerCase(), hidden: Math.round(hidden), beyond: Math.round(beyond),
+                        text: (el.textContent || el.getAttribute('src') || '').trim().replace(/\s+/g, ' ').slice(0, 100)});
+  }
+  const placeholders = (column.innerText.match(/\b(to come|TODO|FIXME|TBD|XXX)\b/g) || []);
   return {
+    overflowing,
+    placeholders,
     href: location.href,
     title: document.title,
     mathjaxVersion: (window.MathJax && MathJax.version) || null,
@@ -385,3 +405,19 @@ def test_screenshot_saved(shown, page):
     width, height = _png_size(shown.screenshot)
     assert (width, height) == shown.screenshot_size
     assert width == 1280 and height >= 300, f"{shown.screenshot}: {width} x {height}"
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_nothing_is_wider_than_the_text_column(shown, page):
+    """A reader sees every output, table and equation whole: nothing runs off the column's right
+    edge or hides behind a scroll bar (book/_static/rotorlyap.css wraps printed outputs and
+    table cells; long equations are split into lines)."""
+    assert not shown.info["overflowing"], (
+        f"{page}: {len(shown.info['overflowing'])} elements wider than the text column: "
+        + "; ".join(f"{o['tag']} ({o['hidden']} px hidden, {o['beyond']} px beyond): {o['text']}"
+                    for o in shown.info["overflowing"][:10]))
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_no_placeholder_is_left_in_the_text(shown, page):
+    assert not shown.info["placeholders"], f"{page}: placeholders in the text: {shown.info['placeholders']}"
