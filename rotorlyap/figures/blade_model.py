@@ -1701,7 +1701,8 @@ class HoverStabilityData(HoverCasesData):
     def facts(self) -> dict[str, Any]:
         """Per case the pitch mode (growth rate, frequency per rev and damping ratio, 2 decimals)
         and the largest growth rate (3 decimals); the backward case's slowest mode shape and
-        its halving time, rev."""
+        its halving time, rev (``ln 2 / (2 pi |sigma|)``: the growth rate ``sigma`` is per rad of
+        azimuth), one decimal."""
         out: dict[str, Any] = {}
         for cg, d in zip(self.cases, self.quantities):
             pm, sm = pitch_mode(d.air_modes), least_damped(d.air_modes)
@@ -1712,7 +1713,8 @@ class HoverStabilityData(HoverCasesData):
             out["ch4_slow_" + s] = _r3(sm.growth_rate)
         sm = least_damped(self["backward"].air_modes)
         out["ch4_slow_bwd_shape"] = "(%.2f, %.2f, %.2f)" % sm.shape
-        out["ch4_slow_bwd_halving"] = int(round(math.log(2) / -sm.growth_rate))
+        # the growth rate is per rad of azimuth (in units of Omega): one revolution is 2 pi of it
+        out["ch4_slow_bwd_halving"] = round(math.log(2) / (2 * math.pi * -sm.growth_rate), 1)
         return out
 
 
