@@ -467,7 +467,7 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
     dict
         ``certified``; ``bound`` and ``start_region`` (scaled norm); ``start_region_per_hinge``
         and ``bound_per_hinge`` (``{flap|lag|pitch: {"deg", "deg_per_s"}}``);
-        ``growth_rate_per_rad``; ``trim`` (controls and shaft tilt in deg, ``CT_over_sigma``);
+        ``growth_rate_per_rev``; ``trim`` (controls and shaft tilt in deg, ``CT_over_sigma``);
         ``message`` (which says "numerical certificate" where one was given).
     """
     import numpy as np
@@ -484,7 +484,7 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
         "start_region": _sig(cert.start_region),
         "start_region_per_hinge": _per_hinge(cert.start_region, cert.scales, omega),
         "bound_per_hinge": _per_hinge(cert.bound, cert.scales, omega),
-        "growth_rate_per_rad": _sig(cert.growth_rate),
+        "growth_rate_per_rev": _sig(cert.growth_rate),
         "trim": {"collective_deg": _sig(collective), "cyclic_cos_deg": _sig(cyc_c), "cyclic_sin_deg": _sig(cyc_s),
                  "shaft_tilt_deg": _sig(math.degrees(cert.trim.shaft_tilt)),
                  "CT_over_sigma": _sig(cert.trim.thrust_coefficient / p.solidity)},

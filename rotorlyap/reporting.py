@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-__all__ = ["ROUNDOFF_FLOOR", "decade_above", "format_small", "format_small_array"]
+__all__ = ["ROUNDOFF_FLOOR", "Rounded", "decade_above", "format_small", "format_small_array"]
 
 ROUNDOFF_FLOOR = 1e-10
 """Threshold below which a residual or relative error is round-off, not a result.
@@ -106,3 +106,24 @@ def decade_above(value: float) -> float:
     if not (math.isfinite(value) and value > 0):
         raise ValueError(f"decade_above needs a positive finite error estimate, got {value!r}")
     return float(10.0 ** math.floor(math.log10(value) + 1.0))
+
+
+class Rounded(float):
+    """A float that prints with a fixed number of decimals: ``Rounded(0.6, 3)`` is 0.6 and
+    prints ``0.600``, so a glued fact shows the digits the computation determines, trailing zeros
+    included (``round(0.59996, 3)`` would print ``0.6``). Arithmetic gives plain floats."""
+
+    def __new__(cls, value: float, decimals: int):
+        if not isinstance(decimals, (int, np.integer)) or decimals < 0:
+            raise ValueError(f"decimals must be a non-negative integer, got {decimals!r}")
+        self = super().__new__(cls, round(float(value), int(decimals)))
+        self.decimals = int(decimals)
+        return self
+
+    def __repr__(self) -> str:
+        return f"{float(self):.{self.decimals}f}"
+
+    __str__ = __repr__
+
+    def __reduce__(self):
+        return (Rounded, (float(self), self.decimals))

@@ -146,11 +146,11 @@ def test_certify_prints_the_certificate_per_hinge(capsys):
     for key, radius in (("start_region_per_hinge", data["start_region"]), ("bound_per_hinge", data["bound"])):
         assert data[key]["flap"]["deg"] == pytest.approx(2.0 * radius, rel=1e-3)
         assert data[key]["pitch"]["deg_per_s"] == pytest.approx(5.0 * radius * OMEGA, rel=1e-3)
-    assert data["growth_rate_per_rad"] < 0.0
+    assert data["growth_rate_per_rev"] < 0.0
     trim = data["trim"]
     assert set(trim) == {"collective_deg", "cyclic_cos_deg", "cyclic_sin_deg", "shaft_tilt_deg", "CT_over_sigma"}
     assert 5.0 < trim["collective_deg"] < 15.0 and 0.05 < trim["CT_over_sigma"] < 0.12
-    numbers = [data["bound"], data["start_region"], data["growth_rate_per_rad"], *trim.values(),
+    numbers = [data["bound"], data["start_region"], data["growth_rate_per_rev"], *trim.values(),
                *(v for h in data["start_region_per_hinge"].values() for v in h.values())]
     assert all(significant_digits_at_most(v) for v in numbers)
 

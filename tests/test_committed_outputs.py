@@ -169,3 +169,35 @@ def test_code_is_hidden_where_it_is_not_the_lesson_and_glue_is_never_shown(path)
         assert not shown, f"{path.name}: {len(shown)} code cells shown (tag them hide-input or remove-input)"
     glued = [k for k, c in enumerate(shown) if re.search(r"\bglue(_facts)?\(", "".join(c["source"]))]
     assert not glued, f"{path.name}: shown code cells call glue: {glued}"
+
+
+PRINTED_ARRAY = re.compile(r"\[\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?(\s+[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?){2,}\s*\]?")
+"""A numpy array as ``print`` writes it: three or more numbers in brackets, separated by blanks."""
+
+
+def printed_arrays(text: str) -> list[str]:
+    """The numpy arrays printed in ``text`` (:data:`PRINTED_ARRAY`)."""
+    return [m.group(0) for m in PRINTED_ARRAY.finditer(text)]
+
+
+def test_the_array_scanner_finds_numpy_arrays_and_not_prose():
+    assert printed_arrays("mu: [0.   0.05 0.1  0.15]") == ["[0.   0.05 0.1  0.15]"]
+    assert printed_arrays("C.G.: [0.2   0.21  0.215 0.22  0.23") != []  # wrapped at numpy's line width
+    assert printed_arrays("forward C.G. at 0.215 c, stable [see (a)]; a list [1, 2, 3]") == []
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_printed_arrays_are_not_shown_as_prose(path):
+    """A printed numpy array is the numeric summary nbval checks a figure by, not something a reader
+    reads: its cell's output is collapsed behind a toggle (``hide-output``) or removed; what the
+    reader needs of it is in the figure and, glued, in the text."""
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    shown = []
+    for k, c in enumerate(nb["cells"]):
+        tags = set(c.get("metadata", {}).get("tags", []))
+        if c["cell_type"] != "code" or {"hide-output", "remove-output", "remove-cell"} & tags:
+            continue
+        found = [a for _, text in _texts(c) for a in printed_arrays(text)]
+        if found:
+            shown.append(f"cell {k}: {found[0][:50]}")
+    assert not shown, f"{path.name}: printed arrays shown on the page (tag the cells hide-output): {shown}"

@@ -44,3 +44,22 @@ def test_an_error_estimate_is_stated_as_the_next_power_of_ten():
 def test_bad_input_says_what_is_allowed(call, match):
     with pytest.raises(ValueError, match=match):
         call()
+
+
+def test_rounded_prints_the_digits_kept_and_glue_drops_a_fake_decimal():
+    """A glued number shows what the rounding kept: 0.600 (three decimals) is not 0.6, and a
+    whole number rounded to units, -21096.0, is shown -21096 (no decimal was kept)."""
+    from rotorlyap.figures.export import glue_value
+    from rotorlyap.reporting import Rounded
+
+    r = Rounded(0.59996, 3)
+    assert repr(r) == str(r) == "0.600" and r == 0.6 and f"{r:.2f}" == "0.60"
+    assert repr(Rounded(-1, 2)) == "-1.00"
+    import pickle
+    assert repr(pickle.loads(pickle.dumps(r))) == "0.600"
+    with pytest.raises(ValueError, match="decimals"):
+        Rounded(1.0, -1)
+    assert glue_value(-21096.0) == -21096 and isinstance(glue_value(-21096.0), int)
+    assert glue_value(2.0) == 2.0 and isinstance(glue_value(2.0), float)  # 2.0 may be round(x, 1)
+    assert isinstance(glue_value(Rounded(20.0, 1)), Rounded)
+    assert glue_value(True) is True and glue_value("0.6") == "0.6"

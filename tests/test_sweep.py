@@ -84,7 +84,7 @@ def test_the_start_region_per_hinge_is_the_radius_times_the_scales(serial):
     assert hover["start_flap_deg"] == pytest.approx(2.0 * lam, rel=1e-12)
     assert hover["start_pitch_deg"] == pytest.approx(1.0 * lam, rel=1e-12)
     assert hover["start_lag_deg_per_s"] == pytest.approx(0.5 * lam * 28.35, rel=1e-12)
-    assert 5.0 < hover["collective_deg"] < 15.0 and hover["growth_rate_per_rad"] < 0.0
+    assert 5.0 < hover["collective_deg"] < 15.0 and hover["growth_rate_per_rev"] < 0.0
     assert hover["shaft_tilt_deg"] == 0.0 and forward["shaft_tilt_deg"] > 0.0 and forward["cyclic_cos_deg"] != 0.0
 
 

@@ -50,8 +50,9 @@ class Certificate:
     trim : ForwardFlightTrim
         The trim: controls, shaft tilt, inflow and the steady motion.
     growth_rate : float
-        Largest real part of the Floquet exponents about the steady motion, per rad of azimuth
-        (linear theory, for comparison).
+        Largest real part of the Floquet exponents about the steady motion, per rev (in units of
+        the rotor speed, i.e. per rad of azimuth: the amplitude grows by ``exp(2 pi growth_rate)``
+        each revolution; linear theory, for comparison).
     bound : float
         The certified bound ``A`` of the scaled norm (0 if nothing is certified).
     start_region : float
@@ -94,7 +95,7 @@ class Certificate:
     def summary(self) -> str:
         """Three lines: the verdict, the start region and the bound per hinge (0.01 deg, 0.1 deg/s)."""
         head = (f"mu = {self.mu:g}, {self.condition}: {'certified' if self.certified else 'not certified'}"
-                f" (largest Floquet real part {self.growth_rate:.3f} per rad)")
+                f" (largest Floquet real part {self.growth_rate:.3f} per rev)")
         if not self.certified:
             return head + "\n  " + self.message
         fmt = lambda d: ", ".join(f"{h} {v[0]:.2f} deg / {v[1]:.1f} deg/s" for h, v in d.items())  # noqa: E731
@@ -157,7 +158,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         return Certificate(certified=False, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=0.0,
                            start_region=0.0, scales=a, result=None,
                            message=f"the linearised blade is unstable (largest Floquet real part {growth:.3f} "
-                                   f"per rad): no quadratic function exists, nothing can be certified ({exc})")
+                                   f"per rev): no quadratic function exists, nothing can be certified ({exc})")
     ok = bool(np.all(res.stable))
     lam = float(np.min(res.lambda0)) if ok else 0.0
     bound = float(res.A) if ok else 0.0

@@ -75,7 +75,7 @@ _HINGE_SYMBOLS: tuple[str, str, str] = HINGES  # flap, lag, pitch: the names of 
 RESULT_COLUMNS: tuple[str, ...] = (
     "certified", "bound", "start_region",
     *(f"start_{h}_{unit}" for h in _HINGE_SYMBOLS for unit in ("deg", "deg_per_s")),
-    "growth_rate_per_rad", "collective_deg", "cyclic_cos_deg", "cyclic_sin_deg", "shaft_tilt_deg", "error",
+    "growth_rate_per_rev", "collective_deg", "cyclic_cos_deg", "cyclic_sin_deg", "shaft_tilt_deg", "error",
 )
 """The columns after the grid's, in order:
 
@@ -88,8 +88,9 @@ RESULT_COLUMNS: tuple[str, ...] = (
 ``start_<hinge>_deg``, ``start_<hinge>_deg_per_s``
     the start region along each hinge angle (deg) and rate (deg/s), hinges ``flap``, ``lag``,
     ``pitch`` (:data:`rotorlyap.conventions.HINGES`);
-``growth_rate_per_rad``
-    largest real part of the Floquet exponents about the steady motion, per rad of azimuth;
+``growth_rate_per_rev``
+    largest real part of the Floquet exponents about the steady motion, per rev (units of the
+    rotor speed, i.e. per rad of azimuth);
 ``collective_deg``, ``cyclic_cos_deg``, ``cyclic_sin_deg``, ``shaft_tilt_deg``
     the trim, deg;
 ``error``

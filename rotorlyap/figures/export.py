@@ -244,12 +244,23 @@ def glue_facts(facts: Mapping) -> None:
     """Glue every ``name: value`` of ``facts`` for the book's text (myst-nb ``glue``, not displayed).
 
     The numbers a chapter quotes come from a data object's ``facts()`` method, rounded there to
-    the digits the computation determines; one call glues them all, in order.
+    the digits the computation determines; one call glues them all, in order. A float rounded to
+    a whole number of at least 10 (``round(x)`` gives ``-21096.0``) is glued as an integer, so the
+    text does not show a decimal the rounding did not keep (:func:`glue_value`); to show trailing
+    zeros that are significant (``0.600``) a fact is a :class:`rotorlyap.reporting.Rounded`.
     """
     from myst_nb import glue
 
     for name, value in facts.items():
-        glue(name, value, display=False)
+        glue(name, glue_value(value), display=False)
+
+
+def glue_value(value):
+    """What :func:`glue_facts` glues for ``value``: an integer for a whole float (not a
+    :class:`~rotorlyap.reporting.Rounded`) of magnitude at least 10, else ``value`` itself."""
+    if type(value) in (float, np.float64) and np.isfinite(value) and value == round(value) and abs(value) >= 10:
+        return int(value)
+    return value
 
 
 def markdown_table(header: Sequence[str], rows: Sequence[Sequence], *, fmt=str) -> str:

@@ -41,6 +41,12 @@ What is checked, page by page
   wider than the column or hides part of itself behind a scroll bar, at the 1280 px window
   the screenshots are taken at;
 * no placeholder is left in the text ("to come", "TODO", "FIXME", "TBD", "XXX");
+* figure text: every figure of the column is a PNG saved at the resolution the figures' rule
+  assumes (``rotorlyap.figures.style.BOOK_DPI``, read from its ``pHYs`` chunk) and is shown at
+  least as wide as the rule assumes (its natural width, or the 672 px column if wider), so that
+  its smallest text, which ``rotorlyap.figures.style.finish`` checked when the figure was made,
+  is displayed at least ``MIN_TEXT_PX`` (8 px) high; the height is computed from the image's
+  file and its displayed width;
 * a screenshot of the whole page is saved under ``_build/screenshots/`` (same path as the
   page, ``.png``) for a person to look at.
 
@@ -200,7 +206,9 @@ COLLECT = r"""
     texErrors,
     rawTex,
     images: [...document.images].map(i => ({src: i.getAttribute('src'), complete: i.complete,
-                                            width: i.naturalWidth, height: i.naturalHeight})),
+                                            width: i.naturalWidth, height: i.naturalHeight,
+                                            shown: i.getBoundingClientRect().width,
+                                            inColumn: column.contains(i) && i.checkVisibility()})),
     links,
     ids: [...document.querySelectorAll('[id]')].map(e => e.id)
         .concat([...document.querySelectorAll('a[name]')].map(e => e.getAttribute('name'))),
@@ -404,6 +412,21 @@ def test_every_figure_links_its_data_as_csv(shown, page):
             assert "_downloads/" in href and (HTML / page).parent.joinpath(unquote(href)).is_file()
 
 
+def _png_dpi(path: Path) -> float | None:
+    """Horizontal resolution of a PNG from its ``pHYs`` chunk, dots per inch (None without one)."""
+    data = path.read_bytes()
+    pos = 8
+    while pos + 8 <= len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"pHYs":
+            x_per_unit, _, unit = struct.unpack(">IIB", data[pos + 8:pos + 17])
+            return x_per_unit * 0.0254 if unit == 1 else None
+        if kind in (b"IDAT", b"IEND"):
+            return None
+        pos += 12 + length
+    return None
+
+
 def _png_size(path: Path) -> tuple[int, int]:
     head = path.read_bytes()[:24]
     assert head[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG"
@@ -431,3 +454,36 @@ def test_nothing_is_wider_than_the_text_column(shown, page):
 @pytest.mark.parametrize("page", PAGES)
 def test_no_placeholder_is_left_in_the_text(shown, page):
     assert not shown.info["placeholders"], f"{page}: placeholders in the text: {shown.info['placeholders']}"
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_figure_text_is_legible_at_the_displayed_width(shown, page):
+    """Every figure's smallest text is shown at least ``MIN_TEXT_PX`` high.
+
+    ``finish`` allows, in a figure ``n`` px wide saved at ``BOOK_DPI``, a smallest font of
+    ``MIN_TEXT_PX * 72 / min(BOOK_DPI, PAGE_WIDTH_PX * BOOK_DPI / n)`` pt, that is
+    ``MIN_TEXT_PX * n / min(n, PAGE_WIDTH_PX)`` image pixels; the browser shows the image
+    ``shown / n`` of its size, so that text is ``MIN_TEXT_PX * shown / min(n, PAGE_WIDTH_PX)``
+    px high on the page. This fails if a figure was saved at another resolution than the rule
+    assumes, or if the page shows it narrower than the column the rule was made for.
+    """
+    from rotorlyap.figures.style import BOOK_DPI, MIN_TEXT_PX, PAGE_WIDTH_PX
+
+    here = Path(unquote(urlsplit(shown.info["href"]).path))
+    small = []
+    for img in shown.info["images"]:
+        if not img["inColumn"] or not img["width"]:
+            continue
+        target = (here.parent / unquote(urlsplit(img["src"]).path)).resolve()
+        if target.suffix.lower() != ".png":
+            small.append(f"{img['src']}: not a PNG made by rotorlyap.figures")
+            continue
+        dpi = _png_dpi(target)
+        if dpi is None or abs(dpi - BOOK_DPI) > 0.5:
+            small.append(f"{img['src']}: saved at {dpi} dpi, the rule assumes {BOOK_DPI:g}")
+            continue
+        text_px = MIN_TEXT_PX * img["shown"] / min(img["width"], PAGE_WIDTH_PX)
+        if text_px < MIN_TEXT_PX - 0.05:
+            small.append(f"{img['src']}: {img['width']} px shown at {img['shown']:.0f} px, "
+                         f"its smallest text at {text_px:.1f} px")
+    assert not small, f"{page}: figures whose text is shown below {MIN_TEXT_PX:g} px: " + "; ".join(small)
