@@ -6,6 +6,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from rotorlyap.cli import _number_list, main, progress_bar
@@ -175,6 +176,40 @@ def test_sweep_writes_the_table_and_counts_the_certified_points(capsys, tmp_path
     assert [r["condition"] for r in rows] == ["propulsive"] * 2 and [r["mu"] for r in rows] == ["0.0"] * 2
     assert rows[0]["certified"] == "False" and "needs air" in rows[0]["error"]
     assert rows[1]["certified"] == "True" and rows[1]["error"] == ""
+
+
+# ---------------------------------------------------------------------- figures
+
+
+@pytest.mark.slow
+def test_figures_writes_each_figure_whole_with_its_data(capsys, tmp_path):
+    """figures --quick writes a PNG and a CSV per figure (Fig 8 once per reading, with the
+    category legend) and names them on stdout; each PNG is saved whole (bbox_inches='tight'),
+    so a white margin runs round every edge: no tick label or legend is cut off."""
+    import matplotlib.image
+
+    assert main(["figures", "--out", str(tmp_path), "--quick"]) == 0
+    out = capsys.readouterr()
+    stems = ["fig4_hover_trim", "fig5_hover_rate", "fig6_w_spheres", "fig7_rate_azimuth",
+             "fig8_regions_practical", "fig8_regions_strict"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(f"{s}.{e}" for s in stems for e in ("csv", "png"))
+    assert out.out.split() == [str(tmp_path / f"{s}.{e}") for s in stems for e in ("png", "csv")]
+    assert "[5/5] Fig 8" in out.err
+    for stem in stems:
+        img = matplotlib.image.imread(tmp_path / f"{stem}.png")[..., :3]
+        frame = np.concatenate([img[:3].reshape(-1, 3), img[-3:].reshape(-1, 3),
+                                img[:, :3].reshape(-1, 3), img[:, -3:].reshape(-1, 3)])
+        assert frame.min() == 1.0, f"{stem}: something reaches the edge of the picture"
+
+
+def test_the_fig8_picture_of_one_reading_has_the_category_legend():
+    """The command line's Fig 8 (one reading per picture) carries the legend of the verdicts."""
+    from rotorlyap.figures import paper
+
+    data = paper.regions_data(("forward",), (0.0, 0.1), reading="practical", n_psi=4)
+    fig = paper.figure_regions_polar(data)
+    [legend] = fig.legends
+    assert [t.get_text().replace("\n", " ") for t in legend.get_texts()][:4] == list(paper.CATEGORY_NAMES)
 
 
 def test_the_command_line_knows_the_trims_conditions():

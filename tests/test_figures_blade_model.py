@@ -78,11 +78,22 @@ def test_schematic_export_is_every_field_but_the_cg_mapping(geo, tmp_path):
 
 def test_figure_functions_return_figures_closed_in_pyplot(geo, coeff, aoa):
     before = plt.get_fignums()
-    figs = {4: bm.figure_blade_schematic(geo), 6: bm.figure_airfoil_coefficients(coeff),
-            2: bm.figure_angle_of_attack(aoa)}
-    for n_axes, fig in figs.items():
+    figs = [(bm.figure_blade_schematic(geo), 4, (9, 10)),
+            (bm.figure_airfoil_coefficients(coeff), 6, (8.6, 7.6)),
+            (bm.figure_angle_of_attack(aoa), 2, (8.6, 4.0))]
+    for fig, n_axes, size in figs:
         assert isinstance(fig, Figure) and len(fig.axes) == n_axes
+        assert tuple(fig.get_size_inches()) == pytest.approx(size)  # at most 9.3 in: 8 pt text legible
     assert plt.get_fignums() == before  # nothing for the notebook to close, nothing shown twice
+
+
+def test_schematic_section_enlarges_the_chord_near_the_pitch_axis(geo):
+    section = bm.figure_blade_schematic(geo).axes[3]
+    (inset,) = section.child_axes
+    labels = " ".join(t.get_text() for t in inset.texts)
+    for name, xc in CG_POSITIONS.items():
+        assert f"({name}) {xc:.3g}$c$" in labels
+    assert "pitch axis" in labels and "aerodynamic centre" in labels
 
 
 def test_closed_form_facts_are_the_closed_forms_rounded(forward):
@@ -296,3 +307,5 @@ def test_cg_sweep_pair_exports_both_sweeps_with_complex_parts_split(tmp_path):
     assert data.summary().splitlines()[1] == "with pitch damping"
     fig = bm.figure_cg_sweep(data)
     assert isinstance(fig, Figure) and len(fig.axes) == 2
+    assert [ax.get_ylabel() for ax in fig.axes] == [r"growth rate Re $s$ (per rev)",
+                                                    r"frequency Im $s$ (per rev)"]

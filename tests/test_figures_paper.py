@@ -19,6 +19,7 @@ from matplotlib.figure import Figure  # noqa: E402
 from rotorlyap.analysis.functions import energy_function  # noqa: E402
 from rotorlyap.figures import paper  # noqa: E402
 from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.figures.style import MIN_TEXT_PX, check_legible  # noqa: E402
 from rotorlyap.conventions import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES  # noqa: E402
 
 
@@ -253,7 +254,7 @@ def test_fig4_summary_confirms_thrust_equals_weight_for_every_case(trim):
 
 
 def test_fig4_figure_is_the_books_two_panels(trim):
-    _closed_figure(paper.figure_hover_trim(trim), (11, 4.2), 2)
+    _closed_figure(paper.figure_hover_trim(trim), (9.0, 4.2), 2)
 
 
 @pytest.mark.slow
@@ -350,7 +351,7 @@ def test_fig5_case_index_needs_the_case_in_the_sweep(rate):
 
 
 def test_fig5_figure_is_the_books_four_panels_and_a_colour_bar(rate):
-    _closed_figure(paper.figure_hover_rate(rate), (11.5, 8.6), 5)
+    _closed_figure(paper.figure_hover_rate(rate), (9.0, 8.8), 5)
 
 
 @pytest.mark.slow
@@ -391,7 +392,7 @@ def test_fig6_pitch_displacement_is_the_axis_with_the_least_energy(wsph):
 
 
 def test_fig6_figure_is_the_books_two_panels(wsph):
-    _closed_figure(paper.figure_w_spheres(wsph), (11.5, 4.3), 2)
+    _closed_figure(paper.figure_w_spheres(wsph), (8.6, 6.6), 2)
 
 
 def test_disturbance_names_name_the_twelve_signed_axes():
@@ -410,7 +411,7 @@ def test_fig7_the_largest_axis_maximum_is_the_practical_maximum(rate7):
 
 
 def test_fig7_figure_is_the_books_two_panels(rate7):
-    _closed_figure(paper.figure_rate_azimuth(rate7), (12, 4.3), 2)
+    _closed_figure(paper.figure_rate_azimuth(rate7), (9.0, 4.2), 2)
 
 
 @pytest.fixture(scope="module")
@@ -437,11 +438,51 @@ def test_fig8_export_has_one_row_per_case_mu_and_azimuth(maps, tmp_path):
 
 
 def test_fig8_figures_have_a_panel_per_reading_and_case_and_the_legend(maps):
-    for fig, size in ((paper.figure_regions_polar(maps.practical, maps.strict), (12, 8.6)),
-                      (paper.figure_regions_plane(maps.practical, maps.strict), (13, 6.8))):
+    # one column per reading, one row per case (here one), the legend below: 0.75 in
+    for fig, size in ((paper.figure_regions_polar(maps.practical, maps.strict), (8.6, 3.75 + 0.75)),
+                      (paper.figure_regions_plane(maps.practical, maps.strict), (8.6, 2.75 + 0.75))):
         _closed_figure(fig, size, 2)
         [legend] = fig.legends
         assert len(legend.get_texts()) == len(paper.CATEGORY_NAMES) + 1
+        left, right = fig.axes
+        assert left.get_position().x0 < right.get_position().x0  # practical left, strict right
+        assert maps.practical.label in left.get_title() and maps.strict.label in right.get_title()
+
+
+def test_fig8_one_reading_puts_its_cases_two_to_a_row_and_the_legend_in_the_spare_cell(regions):
+    three = dataclasses.replace(regions, cases=("forward", "neutral", "backward"),
+                                **{k: np.repeat(getattr(regions, k), 3, axis=0)
+                                   for k in ("stable", "category", "max_dW", "A_used", "lambda0")})
+    fig = paper.figure_regions_polar(three)
+    _closed_figure(fig, (8.6, 2 * 3.75), 4)  # three discs and the spare cell
+    assert not fig.axes[3].axison and len(fig.legends) == 1
+    assert check_legible(fig) >= MIN_TEXT_PX
+
+
+def test_fig8_every_verdict_has_its_hatch_in_the_map_and_the_legend(regions):
+    """The second cue: each verdict's cells carry its hatch (none for 'stable'), the legend patch
+    the same hatch, and the reverse-flow region a hatch of its own, outlined."""
+    from matplotlib.collections import PolyCollection
+
+    from rotorlyap.figures.style import CATEGORY_HATCHES
+
+    handles = paper.category_legend_handles()
+    assert [h.get_hatch() or "" for h in handles[:-1]] == list(CATEGORY_HATCHES)
+    assert handles[-1].get_hatch() == paper.REVERSE_FLOW_HATCH not in CATEGORY_HATCHES
+    reg = dataclasses.replace(regions, mu_values=np.array([0.0, 0.2]))  # reverse flow reaches the root
+    cat = reg.category.copy()
+    cat[0, 1, :4] = [0, 1, 2, 3]
+    reg = dataclasses.replace(reg, category=cat)
+    for projection in ("polar", None):
+        fig = plt.figure()
+        ax = fig.add_subplot(projection=projection)
+        (paper.plot_regions_polar if projection else paper.plot_regions_plane)(reg, ax, 0)
+        hatched = {c.get_hatch(): len(c.get_paths()) for c in ax.collections
+                   if isinstance(c, PolyCollection) and c.get_hatch()}
+        for k, h in enumerate(CATEGORY_HATCHES):
+            assert hatched.get(h, 0) == (int((cat[0] == k).sum()) if h else 0), (projection, h)
+        assert hatched.get(paper.REVERSE_FLOW_HATCH, 0) >= 1
+        plt.close(fig)
 
 
 def test_practical_reading_calls_a_fluttering_blade_stable_in_hover():
@@ -493,7 +534,7 @@ def test_sensitivity_facts_find_the_stable_cells_of_the_large_bound(regions):
     assert lines[-2].endswith("cell by cell: True")
     cols = dict(sens.export())
     assert list(cols)[:2] == ["v0_category", "v0_A_used"] and list(cols)[-2:] == ["mu", "psi_deg"]
-    _closed_figure(paper.figure_sensitivity(sens), (14, 6.6), 8)
+    _closed_figure(paper.figure_sensitivity(sens), (8.6, 10.4), 8)
 
 
 def _synthetic_convergence():
@@ -518,7 +559,7 @@ def test_convergence_facts_state_deviations_as_the_decade_above_them():
 
 
 def test_convergence_figure_is_the_books_three_panels():
-    _closed_figure(paper.figure_convergence(_synthetic_convergence()), (14, 4.0), 3)
+    _closed_figure(paper.figure_convergence(_synthetic_convergence()), (9.0, 7.4), 3)
 
 
 def test_claims_table_has_a_row_per_claim_and_both_readings(wsph, rate7, maps, regions):

@@ -225,12 +225,12 @@ def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_py
     portrait = theory.phase_portrait_data(toy, res, 0, n_starts=2, n_periods=1)
     conv = _convergence(A=[0.44, 0.41, 0.40], lam_mean=[0.3, 0.29, 0.28])
     cases = [
-        (theory.figure_phase_portrait(portrait, title="t"), (7, 4.2), 1),
-        (theory.figure_norm_history(history), (8, 3.6), 1),
-        (theory.figure_level_sets(levels), (11, 5.4), 2),
-        (theory.figure_start_region(theory.start_region_data(res)), (8, 3.6), 2),
-        (theory.figure_max_norm(theory.max_norm_data(history)), (8, 3.4), 1),
-        (theory.figure_convergence(conv), (7.5, 3.8), 1),
+        (theory.figure_phase_portrait(portrait, title="t"), (7, 4.4), 1),
+        (theory.figure_norm_history(history), (7, 3.6), 1),
+        (theory.figure_level_sets(levels), (7.6, 4.2), 2),
+        (theory.figure_start_region(theory.start_region_data(res)), (7, 3.6), 2),
+        (theory.figure_max_norm(theory.max_norm_data(history)), (7, 3.4), 1),
+        (theory.figure_convergence(conv), (7, 3.8), 1),
     ]
     for fig, size, n_axes in cases:
         assert tuple(fig.get_size_inches()) == pytest.approx(size)
@@ -254,6 +254,6 @@ def test_rule_comparison_shows_the_paper_rule_certifying_escaping_starts():
     assert data.sim_norm.shape[1] == facts["ch2_cx_n_paper"]
     assert set(data.export()) == {"psi_deg", "lambda0_paper", "certified_paper", "certified_sound"}
     fig = theory.figure_rule_comparison(data)
-    assert tuple(fig.get_size_inches()) == pytest.approx((8, 4.0))
+    assert tuple(fig.get_size_inches()) == pytest.approx((7.6, 4.6))
     assert [ax.get_xlabel() for ax in fig.axes] == [r"azimuth $\psi$ (deg)", "revolutions after the start"]
     assert fig.number not in plt.get_fignums()

@@ -277,7 +277,7 @@ def _sweep_result(missing=False):
                 continue
             ok = d > -0.1
             numbers = {c: None for c in RESULT_COLUMNS}
-            numbers.update(certified=ok, growth_rate_per_rad=d - 0.2 * k, start_flap_deg=(1 + d) if ok else 0.0,
+            numbers.update(certified=ok, growth_rate_per_rev=d - 0.2 * k, start_flap_deg=(1 + d) if ok else 0.0,
                            error="")
             rows.append((k, d) + tuple(numbers[c] for c in RESULT_COLUMNS))
     return SweepResult(columns, tuple(rows))
@@ -302,6 +302,6 @@ def test_plot_sweep_draws_two_panels_with_a_line_and_markers_per_series():
     fig = your_blade.plot_sweep(your_blade.sweep_figure_data(_sweep_result(), "d", "k"), x_label="d", series_label="k")
     a, b = fig.axes
     assert len(a.get_legend().get_texts()) == 2
-    assert a.get_ylabel() == "largest Floquet real part (per rad)"
+    assert a.get_ylabel() == "largest Floquet real part (per rev)"
     assert b.get_ylabel() == "certified flap start region (deg)"
     assert not plt.fignum_exists(fig.number)

@@ -74,7 +74,7 @@ from ..model.modes import (
 )
 from ..model.parameters import CG_POSITIONS, THIN_AIRFOIL_CM_Q, BladeParameters, parameter_table
 from .export import markdown_table as _markdown_table
-from .style import CG_COLORS, CG_ROMAN, HINGE_COLORS, figure
+from .style import CG_COLORS, CG_MARKERS, CG_ROMAN, HINGE_COLORS, figure, finish
 
 __all__ = [
     # chapter 3
@@ -281,16 +281,16 @@ def schematic_data(params: BladeParameters) -> SchematicData:
 
 
 def figure_blade_schematic(data: SchematicData) -> Figure:
-    """The four panels of the schematic in one figure, 11 x 10 in: (a) the blade from above,
-    (b) the hub from above, (c) the hub from the side, (d) a section."""
-    fig = figure(figsize=(11, 10))
-    gs = fig.add_gridspec(3, 4, height_ratios=[1.0, 0.95, 0.9])
+    """The four panels of the schematic in one figure, 9 x 10 in: (a) the blade from above
+    (top row), (b) the hub from above and (c) from the side (middle row), (d) a section
+    (bottom row); labels of 8 pt."""
+    fig = figure(figsize=(9, 10))
+    gs = fig.add_gridspec(3, 2, height_ratios=[1.0, 0.95, 1.35])
     plot_blade_top_view(data, fig.add_subplot(gs[0, :]))
-    plot_hub_top_view(data, fig.add_subplot(gs[1, :2]))
-    plot_hub_side_view(data, fig.add_subplot(gs[1, 2:]))
-    plot_section(data, fig.add_subplot(gs[2, 1:3]))
-    fig.tight_layout()
-    return fig
+    plot_hub_top_view(data, fig.add_subplot(gs[1, 0]))
+    plot_hub_side_view(data, fig.add_subplot(gs[1, 1]))
+    plot_section(data, fig.add_subplot(gs[2, :]))
+    return finish(fig)
 
 
 def plot_blade_top_view(data: SchematicData, ax) -> None:
@@ -309,22 +309,20 @@ def plot_blade_top_view(data: SchematicData, ax) -> None:
     # dimensions
     _dim(ax, (0, 0), (data.radius, 0), f"$R$ = {data.radius:.3f} m", offset=(0, -0.75))
     _dim(ax, (data.root_cutout, 0), (data.radius, 0), f"$R_1$ = {data.blade_length:.3f} m",
-         offset=(0, -0.52))
+         offset=(0, -0.52), text_offset=(1.2, 0.0))
     _dim(ax, (0, 0), (data.root_cutout, 0), f"$R - R_1$ = {data.root_cutout:.3f} m",
          offset=(0, 0.45), text_offset=(0.1, 0.17))
     _dim(ax, (data.radius + 0.15, y_te), (data.radius + 0.15, y_le), f"$c$ = {c:.2f} m",
          text_offset=(0.42, 0.0))
-    # labels
+    # labels (each with its leader clear of the others)
     ax.annotate("massless cuff", (0.5 * (x_ph + data.root_cutout), 0.5 * y_te), (0.9, -0.95),
                 fontsize=8, arrowprops=dict(arrowstyle="-", color="0.4", lw=0.6))
-    ax.annotate("pitch (feathering) axis, %.2f$c$ behind the leading edge" % xp, (3.6, 0.0),
-                (2.3, 0.62), fontsize=8,
+    ax.annotate("pitch (feathering) axis, %.2f$c$" % xp, (1.9, 0.0), (1.55, 0.5), fontsize=8,
                 color="tab:red", arrowprops=dict(arrowstyle="-", color="tab:red", lw=0.6))
-    ax.annotate("%d aerodynamic stations (Gauss-Legendre)" % len(data.stations),
-                (data.stations[-4], 0.0), (4.3, 1.05), fontsize=8,
-                arrowprops=dict(arrowstyle="-", color="0.2", lw=0.6))
-    ax.text(3.0, y_le + 0.05, "leading edge", fontsize=8, va="bottom")
-    ax.text(3.0, y_te - 0.03, "trailing edge", fontsize=8, va="top")
+    ax.annotate("%d aerodynamic stations" % len(data.stations), (data.stations[-5], y_le),
+                (5.3, 0.55), fontsize=8, arrowprops=dict(arrowstyle="-", color="0.2", lw=0.6))
+    ax.text(4.1, y_le + 0.05, "leading edge", fontsize=8, va="bottom")
+    ax.text(4.1, y_te - 0.03, "trailing edge", fontsize=8, va="top")
     ax.text(0.0, -0.17, "shaft", fontsize=8, ha="center", va="top")
     # frames and senses
     _axes_triad(ax, (-0.55, -0.95), (1, 0), (0, 1), ("$x_H$", "$y_H$"), 0.45)
@@ -339,7 +337,7 @@ def plot_blade_top_view(data: SchematicData, ax) -> None:
     ax.set_xlabel("radial distance from the shaft, $x_H$ (m)")
     ax.set_ylabel("$y_H$ (m)")
     ax.set_title("(a) top view, true scale (seen from above; blade at $\\psi = 0$, pointing aft)",
-                 fontsize=9, loc="left")
+                 fontsize=9.5, loc="left")
 
 
 def _hub_x_dims(ax, data: SchematicData, y: float, step: float) -> None:
@@ -351,7 +349,7 @@ def _hub_x_dims(ax, data: SchematicData, y: float, step: float) -> None:
         _dim(ax, (a, yy), (b, yy), "")
         ax.plot([a, a], [yy - 0.3 * step, yy + 0.3 * step], color="0.15", lw=0.5)
         ax.plot([b, b], [yy - 0.3 * step, yy + 0.3 * step], color="0.15", lw=0.5)
-        ax.text(b + 0.01, yy, f"${lab}$ = {e:.4f} m", fontsize=7, ha="left", va="center")
+        ax.text(b + 0.01, yy, f"${lab}$ = {e:.4f} m", fontsize=8, ha="left", va="center")
 
 
 def plot_hub_top_view(data: SchematicData, ax) -> None:
@@ -373,17 +371,17 @@ def plot_hub_top_view(data: SchematicData, ax) -> None:
     ax.add_patch(Polygon([(x3 + 0.03, 0.3 * y_le), (data.root_cutout, y_le), (data.root_cutout, y_te),
                           (x3 + 0.03, 0.3 * y_te)], closed=True, fc="none", ec="0.45", lw=0.9, ls="--"))
     ax.add_patch(Rectangle((data.root_cutout, y_te), 0.2, c, fc="0.88", ec="k", lw=0.9))
-    ax.text(data.root_cutout + 0.02, y_te + 0.02, "blade\nroot", fontsize=7, va="bottom")
-    ax.text(0.5 * (x3 + data.root_cutout) + 0.05, -0.05, "cuff\n(massless)", fontsize=7,
+    ax.text(data.root_cutout + 0.02, y_te + 0.02, "blade\nroot", fontsize=8, va="bottom")
+    ax.text(0.5 * (x3 + data.root_cutout) + 0.05, -0.05, "cuff\n(massless)", fontsize=8,
             ha="center", va="top", color="0.35")
     _hub_x_dims(ax, data, -0.12, 0.075)
     _dim(ax, (0, 0.25), (data.root_cutout, 0.25), f"$R - R_1$ = {data.root_cutout:.3f} m",
-         fontsize=7, text_offset=(0, 0.045))
+         fontsize=8, text_offset=(0, 0.045))
     ax.text(0.0, 0.16, f"$e_5$ = {data.hub_lengths[4]:.3f} m: the pitch axis passes through the pitch hinge",
-            fontsize=7, ha="left", va="center", color="tab:red")
-    ax.text(x1, 0.065, "flap", fontsize=7, ha="center", color=HINGE_COLORS["flap"])
-    ax.text(x2, 0.03, "lag", fontsize=7, ha="center", va="bottom", color=HINGE_COLORS["lag"])
-    ax.text(x3, 0.03, "pitch", fontsize=7, ha="center", va="bottom", color=HINGE_COLORS["pitch"])
+            fontsize=8, ha="left", va="center", color="tab:red")
+    ax.text(x1, 0.065, "flap", fontsize=8, ha="center", color=HINGE_COLORS["flap"])
+    ax.text(x2, 0.03, "lag", fontsize=8, ha="center", va="bottom", color=HINGE_COLORS["lag"])
+    ax.text(x3, 0.03, "pitch", fontsize=8, ha="center", va="bottom", color=HINGE_COLORS["pitch"])
     ax.set_xlim(-0.08, data.root_cutout + 0.22)
     ax.set_ylim(-0.38, 0.34)
     ax.set_aspect("equal")
@@ -397,7 +395,7 @@ def plot_hub_side_view(data: SchematicData, ax) -> None:
     x1, x2, x3 = data.flap_hinge[0], data.lag_hinge[0], data.pitch_hinge[0]
     z2 = data.lag_hinge[1]
     ax.plot([0, 0], [-0.2, 0.085], color="0.5", lw=5, solid_capstyle="butt")
-    ax.text(0.01, 0.075, "shaft", fontsize=7, va="top")
+    ax.text(0.01, 0.075, "shaft", fontsize=8, va="top")
     ax.plot([0, x1], [0, 0], color="k", lw=2.2, solid_capstyle="butt")
     ax.plot([x1, x2, x2], [0, 0, z2], color="k", lw=2.2, solid_capstyle="butt")
     ax.plot([x2, x3 + 0.1], [z2, z2], color="k", lw=2.2, solid_capstyle="butt")
@@ -406,21 +404,21 @@ def plot_hub_side_view(data: SchematicData, ax) -> None:
             zorder=4)
     ax.add_patch(Rectangle((x3 - 0.03, z2 - 0.01), 0.06, 0.02, fc=HINGE_COLORS["pitch"], ec="k",
                            lw=0.6, zorder=4))
-    ax.text(x1, 0.018, "flap", fontsize=7, ha="center", va="bottom", color=HINGE_COLORS["flap"])
-    ax.text(x2 + 0.012, z2 - 0.022, "lag", fontsize=7, ha="left", va="top", color=HINGE_COLORS["lag"])
-    ax.text(x3, z2 - 0.014, "pitch", fontsize=7, ha="center", va="top", color=HINGE_COLORS["pitch"])
+    ax.text(x1, 0.018, "flap", fontsize=8, ha="center", va="bottom", color=HINGE_COLORS["flap"])
+    ax.text(x2 - 0.008, z2 - 0.008, "lag", fontsize=8, ha="right", va="center", color=HINGE_COLORS["lag"])
+    ax.text(x3, z2 - 0.014, "pitch", fontsize=8, ha="center", va="top", color=HINGE_COLORS["pitch"])
     _dim(ax, (x2 + 0.03, 0), (x2 + 0.03, z2), "")
-    ax.text(x2 + 0.045, 0.045, f"$e_2$ = {data.hub_lengths[1]:.4f} m\n(lag hinge below the flap hinge)",
-            fontsize=7, va="center")
+    ax.text(x2 + 0.045, 0.058, f"$e_2$ = {data.hub_lengths[1]:.4f} m: lag hinge\nbelow the flap hinge",
+            fontsize=8, va="center")
     ax.plot([x1, x3 + 0.1], [0, 0], color="0.6", lw=0.6, ls=":")
     _hub_x_dims(ax, data, -0.085, 0.035)
     # flap sense
     _arrow(ax, (x3 + 0.07, z2 - 0.003), (x3 + 0.09, z2 + 0.035), color=HINGE_COLORS["flap"], lw=1.2,
            connectionstyle="arc3,rad=0.3")
-    ax.text(x3 + 0.095, z2 + 0.03, r"$\beta > 0$" + "\n(tip up)", fontsize=7, color=HINGE_COLORS["flap"],
+    ax.text(x3 + 0.105, z2 + 0.03, r"$\beta > 0$" + "\n(tip up)", fontsize=8, color=HINGE_COLORS["flap"],
             va="center")
-    _axes_triad(ax, (x3 + 0.08, -0.17), (1, 0), (0, 1), ("$x_H$", "$z_H$"), 0.035)
-    ax.set_xlim(-0.04, x3 + 0.17)
+    _axes_triad(ax, (0.02, -0.19), (1, 0), (0, 1), ("$x_H$", "$z_H$"), 0.038)
+    ax.set_xlim(-0.04, x3 + 0.2)
     ax.set_ylim(-0.2, 0.085)
     ax.set_aspect("equal")
     ax.set_xlabel("$x_H$ (m)")
@@ -430,7 +428,8 @@ def plot_hub_side_view(data: SchematicData, ax) -> None:
 
 def plot_section(data: SchematicData, ax) -> None:
     """A blade section seen from the tip (y_B to the leading edge, right; z_B up): pitch axis,
-    aerodynamic centre, the three C.G. positions, and the senses of pitch and air flow."""
+    aerodynamic centre, the three C.G. positions (in an enlarged inset of the chord, since they
+    lie within 0.04 chord of one another), and the senses of pitch and air flow."""
     c = data.chord
     xp = data.pitch_axis
     out = _airfoil_outline()
@@ -438,41 +437,54 @@ def plot_section(data: SchematicData, ax) -> None:
     z = out[:, 1] * c
     ax.fill(y, z, fc="0.9", ec="k", lw=0.9)
     ax.plot([xp * c, -(1 - xp) * c], [0, 0], color="0.5", lw=0.6, ls=":")
-    # points on the chord
-    ax.plot(0, 0, "o", ms=9, mfc="white", mec="tab:red", mew=1.8, zorder=5)
-    ax.plot(0, 0, "+", ms=9, color="tab:red", mew=1.5, zorder=6)
-    ya = (xp - data.aerodynamic_centre) * c
-    ax.plot(ya, 0, "^", ms=7, color="tab:orange", zorder=6)
-    ax.annotate(f"pitch axis {xp:.2f}$c$", (0, 0), (-0.12, 0.11), fontsize=7.5, color="tab:red",
-                ha="right", arrowprops=dict(arrowstyle="-", color="tab:red", lw=0.6))
-    ax.annotate(f"aerodynamic centre {data.aerodynamic_centre:.3f}$c$", (ya, 0), (-0.05, 0.13),
-                fontsize=7.5, color="tab:orange", ha="left",
-                arrowprops=dict(arrowstyle="-", color="tab:orange", lw=0.6))
-    text_at = {"forward": ((0.07, -0.1), "left"), "neutral": ((0.0, -0.13), "center"),
-               "backward": ((-0.07, -0.1), "right")}
-    for name, xc in data.cg_positions.items():
-        yc = (xp - xc) * c
-        ax.plot(yc, 0, "o", ms=3.5, color=CG_COLORS[name], zorder=7)
-        (tx, ty), ha = text_at.get(name, ((yc, -0.1), "center"))
-        ax.annotate(f"C.G. {CG_ROMAN[name]} ({name}) {xc:.3g}$c$", (yc, 0), (tx, ty), fontsize=7,
-                    color=CG_COLORS[name], ha=ha,
-                    arrowprops=dict(arrowstyle="-", color=CG_COLORS[name], lw=0.6))
-    ax.text(xp * c + 0.01, 0.0, "LE", fontsize=7.5, va="center")
-    ax.text(-(1 - xp) * c - 0.01, 0.0, "TE", fontsize=7.5, va="center", ha="right")
+    ax.plot(0, 0, "+", ms=7, color="tab:red", mew=1.2, zorder=6)
+    ax.text(xp * c + 0.01, 0.0, "LE", fontsize=8, va="center")
+    ax.text(-(1 - xp) * c - 0.01, 0.0, "TE", fontsize=8, va="center", ha="right")
     # senses
-    _axes_triad(ax, (-0.34, 0.05), (1, 0), (0, 1), ("$y_B$", "$z_B$"), 0.05)
+    _axes_triad(ax, (0.2, -0.145), (1, 0), (0, 1), ("$y_B$", "$z_B$"), 0.05)
     _arrow(ax, (0.125, 0.005), (0.105, 0.05), color=HINGE_COLORS["pitch"], lw=1.2,
            connectionstyle="arc3,rad=0.3")
-    ax.text(0.125, 0.05, r"$\theta > 0$: nose up", fontsize=7.5, color=HINGE_COLORS["pitch"],
+    ax.text(0.125, 0.05, r"$\theta > 0$: nose up", fontsize=8, color=HINGE_COLORS["pitch"],
             ha="left", va="bottom")
     _arrow(ax, (0.28, -0.035), (0.16, -0.035), color="tab:blue", lw=1.0)
-    ax.text(0.22, -0.045, "air (hover)", fontsize=7, color="tab:blue", ha="center", va="top")
+    ax.text(0.22, -0.045, "air (hover)", fontsize=8, color="tab:blue", ha="center", va="top")
     ax.set_xlim(-0.38, 0.3)
-    ax.set_ylim(-0.15, 0.16)
+    ax.set_ylim(-0.16, 0.09)
     ax.set_aspect("equal")
     ax.set_xlabel("$y_B$ from the pitch axis (m)")
     ax.set_ylabel("$z_B$ (m)")
-    ax.set_title("(d) section seen from the tip ($x_B$ towards the viewer)", fontsize=9, loc="left")
+    ax.set_title("(d) section seen from the tip ($x_B$ towards the viewer); below, the chord near "
+                 "the pitch axis enlarged", fontsize=9.5, loc="left")
+    # the chord from 0.20c to 0.29c behind the leading edge, enlarged (x only)
+    lo, hi = (xp - 0.29) * c, (xp - 0.20) * c
+    ins = ax.inset_axes([-0.32, -0.15, 0.44, 0.09], transform=ax.transData)
+    ins.set_xlim(lo, hi)
+    ins.set_ylim(-0.003, 0.003)
+    ins.set_xticks([])
+    ins.set_yticks([])
+    ins.axhline(0, color="0.5", lw=0.8, ls=":")
+    ax.indicate_inset_zoom(ins, edgecolor="0.4", lw=0.6)
+    above = ins.get_xaxis_transform()  # x in metres, y a fraction of the inset's height
+    ya = (xp - data.aerodynamic_centre) * c
+    ins.plot(0, 0, "o", ms=10, mfc="white", mec="tab:red", mew=1.8, zorder=5)
+    ins.plot(0, 0, "+", ms=10, color="tab:red", mew=1.5, zorder=6)
+    ins.plot(ya, 0, "|", ms=16, mew=2.0, color="tab:orange", zorder=4)
+    ins.plot([0, 0], [0.6, 0.72], color="tab:red", lw=0.6, transform=above)
+    ins.text(0.0005, 0.75, f"pitch axis {xp:.2f}$c$", transform=above, fontsize=8, color="tab:red",
+             ha="right", va="bottom")
+    ins.plot([ya, ya], [0.65, 0.72], color="tab:orange", lw=0.6, transform=above)
+    ins.text(ya - 0.0005, 0.75, f"aerodynamic centre {data.aerodynamic_centre:.3f}$c$", transform=above,
+             fontsize=8, color="tab:orange", ha="left", va="bottom")
+    # C.G. labels under the chord, the one nearest the pitch axis lower down
+    for name, xc in data.cg_positions.items():
+        yc = (xp - xc) * c
+        ins.plot(yc, 0, CG_MARKERS[name], ms=6, color=CG_COLORS[name], mec="k", mew=0.5, zorder=7)
+        low = name == "neutral"
+        ins.plot([yc, yc], [0.4, 0.12 if low else 0.3], color=CG_COLORS[name], lw=0.6, transform=above)
+        ha = {"forward": "left", "backward": "right"}.get(name, "center")
+        ins.text(yc + {"left": -0.0005, "right": 0.0005}.get(ha, 0.0), 0.1 if low else 0.28,
+                 f"C.G. {CG_ROMAN[name]} ({name}) {xc:.3g}$c$", transform=above, fontsize=8,
+                 color=CG_COLORS[name], ha=ha, va="top")
 
 
 # --------------------------------------------------------------------------------------
@@ -765,8 +777,10 @@ _AIRFOIL_STYLES = (dict(color="k", lw=1.3), dict(color="tab:orange", lw=1.2, ls=
 
 def plot_coefficient(data: CoefficientData, ax, coefficient: str = "cl",
                      alpha_range: tuple[float, float] = (-180.0, 180.0),
-                     ylim: tuple[float, float] | None = None, legend: bool = True) -> None:
-    """One coefficient (``"cl"``, ``"cd"`` or ``"cm"``) of every airfoil against alpha (deg)."""
+                     ylim: tuple[float, float] | None = None, legend: bool = True,
+                     band_labels: bool = True) -> None:
+    """One coefficient (``"cl"``, ``"cd"`` or ``"cm"``) of every airfoil against alpha (deg); on
+    the full range, the reverse-flow bands (named unless ``band_labels`` is False)."""
     values = getattr(data, coefficient)
     for k, name in enumerate(data.names):
         v = values[k].astype(float)
@@ -778,11 +792,11 @@ def plot_coefficient(data: CoefficientData, ax, coefficient: str = "cl",
     if hi - lo > 200:
         for s in (-1, 1):
             ax.axvspan(s * 90, s * 180, color="tab:blue", alpha=0.06, lw=0)
-        ax.text(-135, 0.96, "reverse flow", transform=ax.get_xaxis_transform(), fontsize=7,
-                ha="center", va="top", color="tab:blue")
-        ax.text(135, 0.96, "reverse flow", transform=ax.get_xaxis_transform(), fontsize=7,
-                ha="center", va="top", color="tab:blue")
-        ax.set_xticks(np.arange(-180, 181, 45))
+            if band_labels:
+                ax.text(s * 135, 0.96, "reverse flow", transform=ax.get_xaxis_transform(), fontsize=8,
+                        ha="center", va="top", color="tab:blue")
+        ax.set_xticks(np.arange(-180, 181, 90))
+        ax.set_xticks(np.arange(-180, 181, 45), minor=True)
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvline(0, color="0.6", lw=0.5)
     ax.set_xlim(lo, hi)
@@ -791,25 +805,24 @@ def plot_coefficient(data: CoefficientData, ax, coefficient: str = "cl",
     ax.set_ylabel(_COEFF_LABELS[coefficient])
     ax.grid(alpha=0.3)
     if legend:
-        ax.legend(fontsize=7, loc="lower right")
+        ax.legend(fontsize=8, loc="lower left")
 
 
 def figure_airfoil_coefficients(data: CoefficientData) -> Figure:
     """c_l, c_d and c_m (rows) over the full angle range (left) and around attached flow and
-    stall, -25 to 30 deg (right), 11 x 8 in."""
-    fig = figure(figsize=(11, 8))
+    stall, -25 to 30 deg (right), 8.6 x 7.6 in."""
+    fig = figure(figsize=(8.6, 7.6))
     axes = fig.subplots(3, 2, sharex="col", gridspec_kw=dict(width_ratios=[1.6, 1]))
     limits = {"cl": ((-2.0, 2.2), (-1.5, 2.0)), "cd": ((0.0, 2.2), (0.0, 0.4)),
               "cm": ((-0.65, 0.65), (-0.1, 0.05))}
     for i, c in enumerate(("cl", "cd", "cm")):
-        plot_coefficient(data, axes[i, 0], c, ylim=limits[c][0], legend=(i == 0))
+        plot_coefficient(data, axes[i, 0], c, ylim=limits[c][0], legend=(i == 0), band_labels=(i == 0))
         plot_coefficient(data, axes[i, 1], c, alpha_range=(-25, 30), ylim=limits[c][1], legend=False)
     for ax in axes[-1]:
         ax.set_xlabel(r"angle of attack $\alpha$ (deg)")
-    axes[0, 0].set_title("full range", fontsize=9)
-    axes[0, 1].set_title("attached flow and stall", fontsize=9)
-    fig.tight_layout()
-    return fig
+    axes[0, 0].set_title("full range", fontsize=10)
+    axes[0, 1].set_title("attached flow and stall", fontsize=10)
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------
@@ -888,8 +901,10 @@ def plot_angle_of_attack(data: AngleOfAttackData, ax, alpha_range: tuple[float, 
                          legend: bool = True) -> None:
     """Angle of attack (deg) against r/R for each case; dots mark the quadrature stations.
 
-    ``alpha_range`` (deg) zooms the vertical axis; default: the full circle."""
-    colors = ("k", "tab:red", "tab:orange", "tab:blue", "tab:purple", "tab:green")
+    ``alpha_range`` (deg) zooms the vertical axis; default: the full circle. Each case has its
+    colour (Okabe-Ito) and line style."""
+    colors = ("k", "#D55E00", "#E69F00", "#0072B2", "#CC79A7", "#009E73")
+    styles = ("-", "--", "-.", ":")
     for k, (mu, psi) in enumerate(data.cases):
         label = "hover" if mu == 0 else rf"$\mu$ = {mu:g}, $\psi$ = {psi:.0f}$^\circ$"
         # break the line where alpha wraps through +-180 deg
@@ -898,16 +913,17 @@ def plot_angle_of_attack(data: AngleOfAttackData, ax, alpha_range: tuple[float, 
         idx = np.nonzero(np.abs(np.diff(a_plot)) > 180)[0] + 1
         a_plot = np.insert(a_plot, idx, np.nan)
         r_plot = np.insert(r_plot, idx, np.nan)
-        ax.plot(r_plot, a_plot, color=colors[k % len(colors)], lw=1.3, label=label)
+        ax.plot(r_plot, a_plot, color=colors[k % len(colors)], ls=styles[k % len(styles)], lw=1.4,
+                label=label)
         ax.plot(data.stations, data.alpha_stations[k], "o", color=colors[k % len(colors)], ms=3.5)
     ax.axhline(0, color="0.6", lw=0.5)
     ax.axvspan(0, data.root_r_over_R, color="0.85", lw=0)
     if alpha_range is None:
         for s in (-1, 1):
             ax.axhspan(s * 90, s * 180, color="tab:blue", alpha=0.06, lw=0)
-            ax.text(0.99, s * 135, "reverse flow", fontsize=7, color="tab:blue", ha="right",
+            ax.text(0.99, s * 135, "reverse flow", fontsize=8, color="tab:blue", ha="right",
                     va="center")
-        ax.text(0.5 * data.root_r_over_R, 0, "root\ncutout", fontsize=7, ha="center",
+        ax.text(0.5 * data.root_r_over_R, 0, "root cutout", fontsize=8, ha="center",
                 va="center", rotation=90)
         ax.set_yticks(np.arange(-180, 181, 45))
         ax.set_ylim(-185, 185)
@@ -918,20 +934,19 @@ def plot_angle_of_attack(data: AngleOfAttackData, ax, alpha_range: tuple[float, 
     ax.set_ylabel(r"angle of attack $\alpha$ (deg)")
     ax.grid(alpha=0.3)
     if legend:
-        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.16, 1.0))
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.16, 1.0), handlelength=2.5)
 
 
 def figure_angle_of_attack(data: AngleOfAttackData) -> Figure:
     """Angle of attack along the span on the full circle (left) and zoomed on attached flow,
-    -15 to 15 deg (right), 11 x 4.2 in."""
-    fig = figure(figsize=(11, 4.2))
+    -15 to 15 deg (right), 8.6 x 4 in."""
+    fig = figure(figsize=(8.6, 4.0))
     axes = fig.subplots(1, 2, gridspec_kw=dict(width_ratios=[1.3, 1]))
     plot_angle_of_attack(data, axes[0])
     plot_angle_of_attack(data, axes[1], alpha_range=(-15, 15), legend=False)
-    axes[0].set_title("full circle", fontsize=9)
-    axes[1].set_title("zoom on attached flow", fontsize=9)
-    fig.tight_layout()
-    return fig
+    axes[0].set_title("full circle", fontsize=10)
+    axes[1].set_title("zoom on attached flow", fontsize=10)
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------
@@ -1132,35 +1147,42 @@ def cg_sweep_data(cg_positions: Sequence[float], base: BladeParameters | None = 
                        pitch_axis=base.pitch_axis)
 
 
-def plot_cg_sweep(data: CGSweepData, ax, part: str = "real") -> None:
+#: Marker of the modes dominated by each hinge in the C.G. sweep, the second cue to the colour.
+_HINGE_MARKERS = {"flap": "o", "lag": "D", "pitch": "v"}
+
+
+def plot_cg_sweep(data: CGSweepData, ax, part: str = "real", case_labels: bool = True) -> None:
     """Real parts (``part="real"``) or frequencies (``"imag"``) of the hover modes against the
-    C.G. position, coloured by dominant hinge."""
+    C.G. position, coloured and marked by dominant hinge; the Table I cases (I, II, III) named
+    above the axes unless ``case_labels`` is False."""
     f = np.real if part == "real" else np.imag
     for h, name in enumerate(HINGES):
         sel = data.hinges == h
         xs = np.broadcast_to(data.cg[:, None], data.hinges.shape)[sel]
-        ax.plot(xs, f(data.eigenvalues[sel]), "o", ms=4, color=HINGE_COLORS[name],
-                label=f"{name}-dominated mode")
+        ax.plot(xs, f(data.eigenvalues[sel]), _HINGE_MARKERS[name], ms=4.5, color=HINGE_COLORS[name],
+                mec="k", mew=0.3, label=f"{name}-dominated mode")
     if part == "real":
-        ax.plot(data.cg, data.pitch_growth, "-", color=HINGE_COLORS["pitch"], lw=0.8, alpha=0.6)
-        ax.plot(data.cg, data.largest_real, ":", color="0.3", lw=0.8)
+        ax.plot(data.cg, data.pitch_growth, "-", color=HINGE_COLORS["pitch"], lw=0.8, alpha=0.6,
+                label="oscillatory pitch mode")
+        ax.plot(data.cg, data.largest_real, ":", color="0.3", lw=0.8, label="largest real eigenvalue")
         ax.axhline(0, color="k", lw=0.8)
-        ax.set_ylabel(r"growth rate Re $s$ (1/rev)")
+        ax.set_ylabel(r"growth rate Re $s$ (per rev)")
         for x, lab in ((data.flutter_cg, "flutter"), (data.divergence_cg, "divergence")):
             if np.isfinite(x):
                 ax.axvline(x, color="0.3", lw=0.8, ls="--")
                 ax.text(x, 0.97, f" {lab}\n {x:.3f}$c$", transform=ax.get_xaxis_transform(),
-                        fontsize=7, va="top")
+                        fontsize=8, va="top")
     else:
-        ax.set_ylabel(r"frequency Im $s$ (1/rev)")
+        ax.set_ylabel(r"frequency Im $s$ (per rev)")
         ax.set_yscale("symlog", linthresh=0.1)
     ax.axvline(data.aerodynamic_centre, color="tab:orange", lw=1.0,
                label=f"aerodynamic centre {data.aerodynamic_centre:.3f}$c$")
     ax.axvline(data.pitch_axis, color="tab:red", lw=1.0, ls="-.",
                label=f"pitch axis {data.pitch_axis:.2f}$c$")
-    for name, x in CG_POSITIONS.items():
-        ax.text(x, 1.01, CG_ROMAN[name], transform=ax.get_xaxis_transform(), ha="center",
-                va="bottom", fontsize=8, color=CG_COLORS[name])
+    if case_labels:
+        for name, x in CG_POSITIONS.items():
+            ax.text(x, 1.01, CG_ROMAN[name], transform=ax.get_xaxis_transform(), ha="center",
+                    va="bottom", fontsize=9, color=CG_COLORS[name])
     ax.set_xlabel("section C.G., fraction of chord behind the leading edge")
     ax.grid(alpha=0.3)
 
@@ -1233,21 +1255,24 @@ def cg_sweep_pair_data(cg_positions: Sequence[float] = CG_SWEEP_GRID,
 
 
 def figure_cg_sweep(data: CGSweepPairData) -> Figure:
-    """Growth rates (left) and frequencies (right) of the hover modes against the C.G. position,
-    with the pitch mode without pitch damping (dashed) and its flutter boundary, 11 x 4.4 in."""
+    """Growth rates (top) and frequencies (bottom) of the hover modes against the C.G. position,
+    with the pitch mode without pitch damping (dashed) and its flutter boundary, one legend
+    under both, 7.6 x 7.4 in."""
     s, s0 = data.with_damping, data.without_damping
     pitch = HINGE_COLORS["pitch"]
-    fig = figure(figsize=(11, 4.4))
-    axes = fig.subplots(1, 2)
+    fig = figure(figsize=(7.6, 7.4))
+    axes = fig.subplots(2, 1, sharex=True)
     plot_cg_sweep(s, axes[0], "real")
     axes[0].plot(s0.cg, s0.pitch_growth, "--", color=pitch, lw=1.3, label="pitch mode without pitch damping")
     axes[0].axvline(s0.flutter_cg, color=pitch, lw=0.8, ls="--")
+    # between the flutter line and the pitch axis
     axes[0].text(s0.flutter_cg, 0.30, " flutter\n without\n pitch\n damping\n %.3f$c$" % s0.flutter_cg,
-                 transform=axes[0].get_xaxis_transform(), fontsize=7, va="top", color=pitch)
-    plot_cg_sweep(s, axes[1], "imag")
-    axes[0].legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
-    return fig
+                 transform=axes[0].get_xaxis_transform(), fontsize=8, va="top", color=pitch)
+    axes[0].set_xlabel("")
+    plot_cg_sweep(s, axes[1], "imag", case_labels=False)
+    axes[1].legend(*axes[0].get_legend_handles_labels(), fontsize=8, loc="upper center",
+                   bbox_to_anchor=(0.5, -0.17), ncol=3, frameon=False)
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------
@@ -1614,6 +1639,29 @@ def _mode_lines(modes: Sequence[Mode], label: str) -> list[str]:
     return lines
 
 
+def _mode_rows(modes: Sequence[Mode], case: str, closed_form: dict | None = None) -> list[tuple]:
+    """Rows of :func:`_modes_markdown` for one case: the same numbers as :func:`_mode_lines`."""
+    rows = []
+    for m in modes:
+        ratio = "%.3f" % _r4(m.damping_ratio) if m.oscillatory else "real"
+        row = [case, m.dominant_hinge, "%.4f %s %.4f i" % (_r4(m.eigenvalue.real), "+-"[m.eigenvalue.imag < 0],
+                                                          abs(_r4(m.eigenvalue.imag))),
+               "%.4f" % m.natural_frequency]
+        if closed_form is not None:
+            row.append(closed_form.get(m.dominant_hinge, ""))
+        rows.append(tuple(row + [ratio, "%.3f, %.3f, %.3f" % tuple(m.shape)]))
+    return rows
+
+
+def _modes_markdown(rows: list[tuple], closed_form: bool) -> str:
+    """A Markdown table of modes: case, dominant hinge, eigenvalue, |s| (per rev), damping ratio,
+    shape (flap, lag, pitch), with the closed-form frequency if ``closed_form``."""
+    header = ["C.G.", "mode", "eigenvalue $s$ (per rev)", r"$\lvert s \rvert$ (per rev)"]
+    header += ["closed form (per rev)"] if closed_form else []
+    header += ["damping ratio", "shape (flap, lag, pitch)"]
+    return markdown_table(header, rows)
+
+
 @dataclass(frozen=True)
 class VacuumModesData(HoverCasesData):
     """The rotating modes in vacuum of the Table I C.G. cases, with the closed forms."""
@@ -1627,6 +1675,17 @@ class VacuumModesData(HoverCasesData):
                                  "%.4f, pitch %.3f)" % (cg, cf.flap_frequency, cf.lag_frequency,
                                                        cf.lag_decay_rate, cf.pitch_frequency))
         return "\n".join(lines)
+
+    def markdown(self) -> str:
+        """The modes of :meth:`summary` as a Markdown table, with each mode's closed-form frequency
+        (the lag mode's undamped one)."""
+        rows = []
+        for cg, d in zip(self.cases, self.quantities):
+            cf = d.closed_forms
+            closed = {"flap": "%.4f" % cf.flap_frequency, "lag": "%.4f" % cf.lag_frequency,
+                      "pitch": "%.3f" % cf.pitch_frequency}
+            rows += _mode_rows(d.vacuum_modes, cg, closed)
+        return _modes_markdown(rows, closed_form=True)
 
     def facts(self) -> dict[str, float]:
         """The forward case's vacuum frequencies (per rev), lag damping ratio and flap-mode
@@ -1660,6 +1719,13 @@ class AirModesData(HoverCasesData):
         for cg, d in zip(self.cases, self.quantities):
             lines += _mode_lines(d.air_modes, "%s C.G., hover with air" % cg)
         return "\n".join(lines)
+
+    def markdown(self) -> str:
+        """The modes of :meth:`summary` as a Markdown table."""
+        rows = []
+        for cg, d in zip(self.cases, self.quantities):
+            rows += _mode_rows(d.air_modes, cg)
+        return _modes_markdown(rows, closed_form=False)
 
     def facts(self) -> dict[str, Any]:
         """The forward case's flap, lag and pitch modes with air (frequencies per rev, damping
@@ -1794,6 +1860,18 @@ class SensitivityData:
                 r.cg_position, _r3(pm.growth_rate), "%+.3f (%s)" % (_r3(sm.growth_rate), _kind(sm)),
                 "unstable" if sm.unstable else "stable"))
         return "\n".join(lines)
+
+    def markdown(self) -> str:
+        """The table of :meth:`summary` in Markdown."""
+        rows = []
+        for r in self.rows:
+            pm, sm = r.pitch_mode, r.least_damped
+            rows.append((r.reading, "%s %.3f" % (r.damping, r.cm_pitch_rate) if r.cm_pitch_rate else "none (0)",
+                         r.case, "%.3f" % r.cg_position, "%+.3f" % _r3(pm.growth_rate),
+                         "%+.3f (%s)" % (_r3(sm.growth_rate), _kind(sm)),
+                         "**unstable**" if sm.unstable else "stable"))
+        return markdown_table(["C.G. measured from", "pitch damping $c_{m_q}$", "case", "C.G./$c$",
+                               "pitch mode Re $s$ (per rev)", "largest Re $s$ (its mode)", "hover"], rows)
 
     def facts(self) -> dict[str, float]:
         """Per case the pitch-mode and largest growth rates (per rev, 3 decimals); the forward

@@ -1,8 +1,10 @@
 """Regenerate the data (CSV) and pictures (PNG) of the paper's Figs 4-8 into a folder.
 
 Used by ``python -m rotorlyap figures --out DIR``. Each figure calls the same data and
-drawing functions as the book (:mod:`rotorlyap.figures.paper`), so the files match the
-book's figures (with coarser grids under ``quick=True``).
+drawing functions as the book (:mod:`rotorlyap.figures.paper`), laid out and checked for
+legibility there, so the files match the book's figures (with coarser grids under
+``quick=True``); Fig 8 shows one reading per file, its cases two to a row with the category
+legend.
 """
 
 from __future__ import annotations
@@ -68,8 +70,8 @@ def regenerate_figures(out: Path, *, quick: bool = False,
         made = {}
         for reading, mus in (("practical", mu_grid), ("strict", mu_strict)):
             data = paper.regions_data(cases, mus, reading=reading, n_psi=n_psi)
-            fig = paper.figure_regions_polar(data, figsize=(max(4.6 * len(cases), 11.0), 6.2))
-            made[f"fig8_regions_{reading}"] = (data, fig)
+            # the cases two to a row, with the category legend (in the spare cell, or below)
+            made[f"fig8_regions_{reading}"] = (data, paper.figure_regions_polar(data))
         return made
 
     steps = [("Fig 4: hover trim", fig4), ("Fig 5: W' in hover against C.G.", fig5),
@@ -81,6 +83,7 @@ def regenerate_figures(out: Path, *, quick: bool = False,
             progress(i, len(steps), label)
         for name, (data, fig) in make().items():
             png = out / f"{name}.png"
-            fig.savefig(png, dpi=120)
+            # the whole figure, nothing clipped: tick labels and legends outside the axes included
+            fig.savefig(png, dpi=120, bbox_inches="tight")
             written += [png, Path(figure_csv(data, out / f"{name}.csv"))]
     return written

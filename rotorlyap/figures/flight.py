@@ -36,7 +36,7 @@ from ..model.mass import mass_properties
 from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.steady import tabulate_motion
 from .export import markdown_table
-from .style import CG_COLORS, subplots
+from .style import CG_COLORS, CG_MARKERS, figure, finish, subplots
 from .validation import _category  # the verdict categories of chapter 7's scans
 
 __all__ = [
@@ -77,7 +77,7 @@ def puma_radius_of_gyration() -> float:
 
 def _growth(params: BladeParameters, mu: float, steady) -> float:
     """Largest real part of the Floquet exponents about ``steady`` (a steady motion, or None for
-    the hover trim of ``params``), per rad of azimuth."""
+    the hover trim of ``params``), per rev (per radian of azimuth)."""
     return float(blade_floquet(params, mu, steady="periodic" if steady is None else steady).exponents.real.max())
 
 
@@ -117,7 +117,7 @@ class TrimData:
         Vertical rotor force over the weight in the paper's condition (table_i, hover controls,
         periodic motion), (k, m); NaN where the blade has no periodic motion near hover.
     growth_paper : numpy.ndarray
-        Largest Floquet real part about the paper's condition's periodic motion, per rad, (k, m).
+        Largest Floquet real part about the paper's condition's periodic motion, per rev, (k, m).
     growth_trimmed : numpy.ndarray
         The same about the trimmed helicopter's periodic motion, (k, m).
     growth_trimmed_incompressible : numpy.ndarray
@@ -140,7 +140,7 @@ class TrimData:
 
     def summary(self) -> str:
         """Per case: the paper's lift over weight (0.01), the trimmed controls and tilt (0.01 deg),
-        both growth rates (0.001 per rad)."""
+        both growth rates (0.001 per rev)."""
         lines = [f"mu: {_fmt(self.mu_values, 3)}"]
         for i, case in enumerate(self.cases):
             lines += [
@@ -234,41 +234,57 @@ def trim_data(cases=CASES, mu_values=MU_TRIM) -> TrimData:
                     growth_trimmed_incompressible=g_inc, retreating_alpha_deg=a270)
 
 
-def figure_trim(data: TrimData, figsize=(12, 3.8)):
-    """Three panels: the paper's lift over weight; the trimmed controls and tilt (forward C.G.);
-    the growth rates of both conditions. Returns the figure."""
-    fig, ax = subplots(1, 3, figsize=figsize)
+def figure_trim(data: TrimData, figsize=(8.6, 7.0)):
+    """Three panels: (a) the paper's lift over weight; (b) the trimmed controls and tilt (forward
+    C.G.); (c, the full width below) the growth rates of both conditions, per rev (colour and
+    marker per C.G. case, line style per condition). Returns the figure."""
+    from matplotlib.lines import Line2D
+
+    fig = figure(figsize=figsize)
+    ax = fig.subplot_mosaic([["a", "b"], ["c", "c"]])
+    ax = [ax["a"], ax["b"], ax["c"]]
     mu = data.mu_values
+    conditions = (("paper's condition", "--", dict(mfc="white")),
+                  ("trimmed, incompressible", ":", dict(ms=4)),
+                  ("trimmed, compressible", "-", {}))
     for i, case in enumerate(data.cases):
-        c = CG_COLORS[case]
-        ax[0].plot(mu, data.paper_lift_ratio[i], "o-", color=c, label=f"{case} C.G.")
-        ax[2].plot(mu, data.growth_paper[i], "o--", color=c)
-        ax[2].plot(mu, data.growth_trimmed_incompressible[i], "^:", color=c)
-        ax[2].plot(mu, data.growth_trimmed[i], "s-", color=c)
+        c, m = CG_COLORS[case], CG_MARKERS[case]
+        ax[0].plot(mu, data.paper_lift_ratio[i], "-", marker=m, color=c, label=f"{case} C.G.")
+        for g, (_, ls, kw) in zip((data.growth_paper[i], data.growth_trimmed_incompressible[i],
+                                   data.growth_trimmed[i]), conditions):
+            ax[2].plot(mu, g, ls, marker=m, color=c, **{"ms": 6, **kw})
     ax[0].axhline(1.0, color="k", lw=0.8)
-    ax[0].text(mu[-1], 1.02, "trimmed: 1", ha="right", va="bottom", fontsize=8)
-    ax[0].set(xlabel=r"advance ratio $\mu$", ylabel="vertical rotor force / weight",
-              title="(a) the paper's condition overloads the rotor")
-    ax[0].legend(fontsize=8)
+    ax[0].text(mu[-1], 1.02, "trimmed: 1", ha="right", va="bottom", fontsize=9)
+    ax[0].set(xlabel=r"advance ratio $\mu$", ylabel="vertical rotor force / weight")
+    ax[0].set_title("(a) the paper's condition overloads the rotor", fontsize=10)
+    ax[0].legend(fontsize=8.5)
     labels = ("collective", r"cyclic $\theta_{1c}$", r"cyclic $\theta_{1s}$")
     styles = ("-", "--", ":")
     for q in range(3):
-        ax[1].plot(mu, data.controls_deg[0, :, q], styles[q], color="tab:blue", label=labels[q])
-    ax[1].plot(mu, data.shaft_tilt_deg[0], "-", color="tab:orange", label="shaft tilt (forward)")
+        ax[1].plot(mu, data.controls_deg[0, :, q], styles[q], color="#0072B2", label=labels[q])
+    ax[1].plot(mu, data.shaft_tilt_deg[0], "-", color="#E69F00", lw=2.0, label="shaft tilt (forward)")
     ax[1].axhline(0.0, color="k", lw=0.5)
-    ax[1].set(xlabel=r"advance ratio $\mu$", ylabel="deg", title="(b) trim, forward C.G.")
-    ax[1].legend(fontsize=8)
+    ax[1].set(xlabel=r"advance ratio $\mu$", ylabel="angle (deg)")
+    ax[1].set_title("(b) trim, forward C.G.", fontsize=10)
+    _headroom(ax[1], 0.3)
+    ax[1].legend(fontsize=8.5, ncol=2, loc="upper left", columnspacing=1.0)
     ax[2].axhline(0.0, color="k", lw=0.8)
-    ax[2].set(xlabel=r"advance ratio $\mu$", ylabel="largest Floquet real part, 1/rad",
-              title="(c) linear stability")
-    from matplotlib.lines import Line2D
+    ax[2].set(xlabel=r"advance ratio $\mu$", ylabel="largest Floquet real part (per rev)")
+    ax[2].set_title("(c) linear stability: above 0 the linearised blade is unstable", fontsize=10)
+    handles = [Line2D([], [], color=CG_COLORS[case], marker=CG_MARKERS[case], ls="none", ms=6,
+                      label=f"{case} C.G.") for case in data.cases]
+    handles += [Line2D([], [], color="k", ls=ls, marker="o", label=lab, **{"ms": 6, **kw})
+                for lab, ls, kw in conditions]
+    _headroom(ax[2], 0.45)
+    ax[2].legend(handles=handles, fontsize=8.5, ncol=2, loc="upper right")
+    return finish(fig)
 
-    style = [Line2D([], [], color="k", ls="--", marker="o", label="paper's condition"),
-             Line2D([], [], color="k", ls=":", marker="^", label="trimmed, incompressible"),
-             Line2D([], [], color="k", ls="-", marker="s", label="trimmed, compressible")]
-    ax[2].legend(handles=style, fontsize=8, loc="upper center")
-    fig.tight_layout()
-    return fig
+
+def _headroom(ax, fraction: float) -> None:
+    """Raise the top of ``ax``'s y axis by ``fraction`` of its data range: room for a legend
+    above the data."""
+    lo, hi = ax.dataLim.y0, ax.dataLim.y1
+    ax.set_ylim(lo - 0.05 * (hi - lo), hi + fraction * (hi - lo))
 
 
 # --------------------------------------------------------------------------------------
@@ -348,16 +364,20 @@ def disc_data(case: str = "forward", mu: float = 0.25, n_azimuth: int = 72, n_st
                     stall_deg=tuple(math.degrees(a) for a in v0.stall_angles))
 
 
-def figure_disc(data: DiscData, figsize=(11, 5.4)):
+def figure_disc(data: DiscData, figsize=(8.8, 5.6)):
     """Two discs seen from above (psi = 0 over the tail, advancing side on the right): the
-    angle of attack in colour, stall and reverse flow hatched, the transonic region outlined."""
+    angle of attack in colour, stall and reverse flow hatched, the transonic region outlined;
+    the colour bar and the legend of the hatches below. Returns the figure."""
     from matplotlib.colors import BoundaryNorm
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
 
-    fig, ax = subplots(1, 2, figsize=figsize, subplot_kw={"projection": "polar"})
+    fig, ax = subplots(1, 2, figsize=figsize, subplot_kw={"projection": "polar"}, layout="constrained")
     th = np.concatenate([data.psi, [data.psi[0] + TWO_PI]])
     r = data.r_over_R
     levels = np.arange(-8.0, 22.0, 2.0)
     norm = BoundaryNorm(levels, 256, extend="both")
+    hatches = {"stalled": "xxx", "reverse": "///"}
     for i, lab in enumerate(data.labels):
         a = ax[i]
         a.set_theta_zero_location("S")
@@ -367,26 +387,33 @@ def figure_disc(data: DiscData, figsize=(11, 5.4)):
         al = np.vstack([al, al[:1]])
         T, Rr = np.meshgrid(th, r, indexing="ij")
         cs = a.contourf(T, Rr, al, levels=levels, cmap="viridis", norm=norm, extend="both")
-        for flag, hatch in ((data.stalled[i], "xxx"), (data.reverse_flow[i], "///")):
+        for flag, hatch in ((data.stalled[i], hatches["stalled"]), (data.reverse_flow[i], hatches["reverse"])):
             f = np.vstack([flag, flag[:1]]).astype(float)
             if f.any():
                 a.contourf(T, Rr, f, levels=[0.5, 1.5], colors="none", hatches=[hatch])
                 a.contour(T, Rr, f, levels=[0.5], colors="k", linewidths=0.6)
         tr = np.vstack([data.transonic[i], data.transonic[i][:1]]).astype(float)
         if tr.any():
-            a.contour(T, Rr, tr, levels=[0.5], colors="tab:red", linewidths=1.5)
+            a.contour(T, Rr, tr, levels=[0.5], colors="tab:red", linewidths=1.8)
         a.set_ylim(0, 1)
         a.set_yticks([0.25, 0.5, 0.75, 1.0])
-        a.set_yticklabels(["", "r/R = 0.5", "", "1"], fontsize=7)
+        a.set_yticklabels(["", "r/R = 0.5", "", "1"], fontsize=8.5)
         a.set_rlabel_position(225)
         a.set_xticks(np.radians([0, 90, 180, 270]))
-        a.set_xticklabels(["0° tail", "90°\nadvancing", "180° nose", "270°\nretreating"], fontsize=8)
-        a.tick_params(axis="x", pad=6)
-        a.set_title(f"{lab}, $\\mu$ = {data.mu:g}", fontsize=10, pad=18)
-    cb = fig.colorbar(cs, ax=ax, orientation="horizontal", fraction=0.05, pad=0.12, aspect=40)
-    cb.set_label("angle of attack, deg (hatched x: stalled, beyond "
-                 f"{data.stall_deg[1]:.0f} deg; hatched /: reverse flow; red line: transonic, M > M_dd)", fontsize=8)
-    return fig
+        a.set_xticklabels(["0° tail", "90°\nadvancing", "180° nose", "270°\nretreating"], fontsize=9)
+        a.tick_params(axis="x", pad=7)
+        a.set_title(f"({'ab'[i]}) {lab}, $\\mu$ = {data.mu:g}", fontsize=10.5, pad=14)
+    cb = fig.colorbar(cs, ax=ax, orientation="horizontal", fraction=0.05, pad=0.04, aspect=40, shrink=0.8)
+    cb.set_label("angle of attack (deg)", fontsize=9.5)
+    cb.ax.tick_params(labelsize=9)
+    handles = [Patch(facecolor="white", edgecolor="k", hatch=hatches["stalled"],
+                     label=f"stalled: beyond {data.stall_deg[1]:.0f} deg"),
+               Patch(facecolor="white", edgecolor="k", hatch=hatches["reverse"], label="reverse flow"),
+               Line2D([], [], color="tab:red", lw=1.8, label=r"transonic: $M > M_{dd}$")]
+    fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize=9, frameon=False,
+               handlelength=2.5, handleheight=1.4)
+    fig.get_layout_engine().set(wspace=0.12)  # the discs' side labels apart
+    return finish(fig, layout=False)
 
 
 # --------------------------------------------------------------------------------------
@@ -414,7 +441,7 @@ class ModelChoiceData:
         Trimmed ``cyclic_cos`` of the forward C.G., deg, (v, m): what cancels the lateral
         flapping the longitudinal inflow gradient drives.
     growth : numpy.ndarray
-        Largest Floquet real part, per rad, (v, k, m).
+        Largest Floquet real part, per rev, (v, k, m).
     """
 
     cases: tuple
@@ -426,7 +453,7 @@ class ModelChoiceData:
     growth: np.ndarray
 
     def summary(self) -> str:
-        """k_x (0.01), collective (0.01 deg) and growth rate (0.001 per rad) of each variant."""
+        """k_x (0.01), collective (0.01 deg) and growth rate (0.001 per rev) of each variant."""
         lines = [f"mu: {_fmt(self.mu_values, 3)}"]
         for v, lab in enumerate(self.variants):
             lines.append(f"{lab}: k_x {_fmt(self.kx[v], 2)}, forward C.G. cyclic cos, deg {_fmt(self.lateral_cyclic_deg[v], 2)}")
@@ -435,9 +462,9 @@ class ModelChoiceData:
         return "\n".join(lines)
 
     def markdown(self) -> str:
-        """The growth rates at the largest advance ratio as a table (0.001 per rad)."""
+        """The growth rates at the largest advance ratio as a table (0.001 per rev)."""
         j = -1
-        header = (["model", "k_x"] + [f"growth rate, {c} C.G., 1/rad" for c in self.cases]
+        header = (["model", "k_x"] + [f"growth rate, {c} C.G., per rev" for c in self.cases]
                   + ["collective, forward C.G., deg", "lateral cyclic, forward C.G., deg"])
         rows = [[lab, f"{self.kx[v, j]:.2f}"] + [f"{self.growth[v, i, j]:.3f}" for i in range(len(self.cases))]
                 + [f"{self.collective_deg[v, 0, j]:.2f}", f"{self.lateral_cyclic_deg[v, j]:.2f}"]
@@ -511,7 +538,7 @@ class Delta3Data:
     couplings : numpy.ndarray
         The two values of ``pitch_flap_coupling`` (tan delta3), (2,).
     growth : numpy.ndarray
-        Largest real part of the hover eigenvalues, per rad, (2, k).
+        Largest real part of the hover eigenvalues, per rev, (2, k).
     growth_trimmed : numpy.ndarray
         The same for the trimmed helicopter at ``mu``, (2, k).
     mu : float
@@ -533,7 +560,7 @@ class Delta3Data:
         return "less stable aft" if g[-1] > g[0] else "more stable aft"
 
     def summary(self) -> str:
-        """Growth rates (0.001 per rad) per sign and the aft trend."""
+        """Growth rates (0.001 per rev) per sign and the aft trend."""
         lines = []
         for a, t in enumerate(self.couplings):
             lines.append(f"tan(delta3) = {t:+.1f}: hover {_fmt(self.growth[a], 3)} ({self.aft_trend(a)}), "
@@ -599,7 +626,7 @@ class PitchInertiaData:
     pitch_inertia : numpy.ndarray
         Blade inertia about the pitch axis, kg m^2, (n,).
     growth : numpy.ndarray
-        Largest real part of the hover eigenvalues, per rad, (n,): the paper's incompressible
+        Largest real part of the hover eigenvalues, per rev, (n,): the paper's incompressible
         sections (:meth:`BladeParameters.table_i`).
     growth_compressible : numpy.ndarray
         The same with the report's forward-flight model (:meth:`BladeParameters.flight_case`), (n,).
@@ -607,7 +634,7 @@ class PitchInertiaData:
         The report's radius of gyration, fraction of chord.
     reference : tuple of float
         The Puma blade section's radius of gyration (:func:`puma_radius_of_gyration`), the
-        pitch inertia it gives this blade (kg m^2) and the growth rate there (per rad).
+        pitch inertia it gives this blade (kg m^2) and the growth rate there (per rev).
     """
 
     case: str
@@ -619,12 +646,12 @@ class PitchInertiaData:
     reference: tuple
 
     def summary(self) -> str:
-        """Inertia (0.01 kg m^2) and growth rate (0.001 per rad) along the sweep, and at the
+        """Inertia (0.01 kg m^2) and growth rate (0.001 per rev) along the sweep, and at the
         Puma section's radius of gyration."""
         return "\n".join([
             f"{self.case} C.G., hover; pitch radius of gyration / chord: {_fmt(self.radius_of_gyration, 2)}",
             f"  pitch inertia, kg m^2: {_fmt(self.pitch_inertia, 2)}",
-            f"  growth rate, 1/rad:    {_fmt(self.growth, 3)}",
+            f"  growth rate, per rev:  {_fmt(self.growth, 3)}",
             f"  compressible sections: {_fmt(self.growth_compressible, 3)}",
             f"  Puma section k/c = {self.reference[0]:.3f}: {self.reference[1]:.2f} kg m^2, growth rate {self.reference[2]:.3f}",
         ])
@@ -671,23 +698,24 @@ def pitch_inertia_data(case: str = "backward",
                             reference=ref)
 
 
-def figure_pitch_inertia(data: PitchInertiaData, figsize=(6.4, 3.8)):
-    """The hover growth rate against the blade's pitch inertia, with the report's assumption and
-    the Puma section's radius of gyration marked. Returns the figure."""
+def figure_pitch_inertia(data: PitchInertiaData, figsize=(6.4, 4.0)):
+    """The hover growth rate (per rev) against the blade's pitch inertia, with the report's
+    assumption and the Puma section's radius of gyration marked. Returns the figure."""
     reference = {"Puma blade section": data.reference[1]}
     fig, ax = subplots(figsize=figsize)
     c = CG_COLORS.get(data.case, "k")
-    ax.plot(data.pitch_inertia, data.growth, "o-", color=c, label=f"{data.case} C.G., hover, incompressible")
-    ax.plot(data.pitch_inertia, data.growth_compressible, "s:", color=c, label=f"{data.case} C.G., hover, compressible")
+    m = CG_MARKERS.get(data.case, "o")
+    ax.plot(data.pitch_inertia, data.growth, "-", marker=m, color=c, label=f"{data.case} C.G., hover, incompressible")
+    ax.plot(data.pitch_inertia, data.growth_compressible, ":", marker=m, mfc="white", color=c,
+            label=f"{data.case} C.G., hover, compressible")
     i0 = int(np.argmin(np.abs(data.radius_of_gyration - data.assumed)))
     ax.plot(data.pitch_inertia[i0], data.growth[i0], "k*", ms=12, label="the report's assumption")
     for lab, val in reference.items():
         ax.axvline(val, color="0.5", ls="--", lw=1, label=lab)
     ax.axhline(0.0, color="k", lw=0.8)
-    ax.set(xlabel=r"blade inertia about the pitch axis, kg m$^2$", ylabel="largest real part, 1/rad")
-    ax.legend(fontsize=8, loc="upper right")
-    fig.tight_layout()
-    return fig
+    ax.set(xlabel=r"blade inertia about the pitch axis (kg m$^2$)", ylabel="largest real part (per rev)")
+    ax.legend(fontsize=8.5, loc="upper right")
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------

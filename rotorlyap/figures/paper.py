@@ -21,6 +21,8 @@ advancing side and ``psi = 270 deg`` the retreating side.
 
 from __future__ import annotations
 
+import re
+
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -37,13 +39,14 @@ from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.trim import hover_trim
 from ..reporting import decade_above
 from .export import markdown_table  # the claims table; also re-exported for the chapters
-from .style import CATEGORY_COLORS, figure, subplots
+from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HINGE_COLORS, HINGE_LINESTYLES,
+                    figure, finish, subplots)
 
 __all__ = [
     "READING_LABELS", "CASES", "MU_GRID", "MU_GRID_STRICT", "STATE_LABELS",
     "FLAP_LAG_TEST_DISTURBANCES", "AXES_AND_DIAGONALS", "THRESHOLD_TEST_SETS",
     "case_params", "cg_sweep", "balanced_scales", "practical_threshold_mu", "reverse_flow_boundary",
-    "disturbance_names", "category_legend_handles",
+    "disturbance_names", "category_legend_handles", "REVERSE_FLOW_HATCH",
     "HoverSweep", "hover_sweep",
     "HoverTrimData", "hover_trim_data", "plot_hover_trim", "figure_hover_trim",
     "TrimLimitData", "trim_limit_data",
@@ -182,13 +185,32 @@ def _line(*parts) -> str:
     return " ".join(str(p) for p in parts)
 
 
-def category_legend_handles(reverse_flow_label: str = "reverse flow reaches the blade root") -> list:
-    """Legend handles of the region maps: one patch per :data:`CATEGORY_NAMES`, and the hatch
-    of the reverse-flow region."""
+#: Hatch of the region where reverse flow reaches the blade root, drawn over the verdict maps
+#: with an outline: vertical lines, unlike the diagonal and dotted hatches of the verdicts
+#: (:data:`rotorlyap.figures.style.CATEGORY_HATCHES`).
+REVERSE_FLOW_HATCH = "||"
+
+_HATCH_COLOR = "0.15"
+_HATCH_LINEWIDTH = 0.6
+
+
+def category_legend_handles(reverse_flow_label: str = "reverse flow reaches the blade root", *,
+                            wrap: int | None = None) -> list:
+    """Legend handles of the region maps: one patch per :data:`CATEGORY_NAMES`, in its colour and
+    hatch, and the outlined, hatched reverse-flow region; ``wrap`` breaks the labels into lines
+    of at most that many characters."""
+    import textwrap
+
     from matplotlib.patches import Patch
 
-    handles = [Patch(color=c, label=n) for c, n in zip(CATEGORY_COLORS, CATEGORY_NAMES)]
-    handles.append(Patch(facecolor="none", edgecolor="k", hatch="///", label=reverse_flow_label))
+    def lab(text):
+        return text if wrap is None else "\n".join(textwrap.wrap(text, wrap))
+
+    handles = [Patch(facecolor=c, hatch=h, edgecolor="0.3", hatchcolor=_HATCH_COLOR, lw=0.6, label=lab(n),
+                     hatch_linewidth=_HATCH_LINEWIDTH)
+               for c, h, n in zip(CATEGORY_COLORS, CATEGORY_HATCHES, CATEGORY_NAMES)]
+    handles.append(Patch(facecolor="none", edgecolor="k", hatch=REVERSE_FLOW_HATCH, hatchcolor="k", lw=1.5,
+                         label=lab(reverse_flow_label)))
     return handles
 
 
@@ -365,44 +387,53 @@ def hover_trim_data(cg_values=np.linspace(0.195, 0.275, 9), cases=CASES, **overr
 
 
 def plot_hover_trim(data: HoverTrimData, axes) -> None:
-    """Left: the cases' angles as grouped bars; right: the C.G. sweep (deg)."""
+    """Left: the cases' angles as grouped bars, each labelled with its value; right: the C.G.
+    sweep (deg), the collective in black and each hinge in its colour and line style."""
     ax, ax2 = axes
     names = ("collective", r"flap $\beta$", r"lag $\zeta$", r"pitch $\theta$")
     vals = np.degrees(np.column_stack([data.case_collective, data.case_equilibrium]))
-    colors = ("tab:blue", "0.45", "tab:red")
-    w = 0.26
+    n = len(data.case_names)
+    w = 0.9 / n
     xs = np.arange(len(names))
-    for i, (case, c) in enumerate(zip(data.case_names, colors)):
-        bars = ax.bar(xs + (i - 1) * w, vals[i], w, color=c,
-                      label=f"{case} C.G. ({data.case_cg[i]:.3g} c)")
+    for i, case in enumerate(data.case_names):
+        bars = ax.bar(xs + (i - (n - 1) / 2) * w, vals[i], w, color=CG_COLORS.get(case, "0.6"), edgecolor="k",
+                      lw=0.5, label=f"{case} C.G. ({data.case_cg[i]:.3g} c)")
         for b, v in zip(bars, vals[i]):
-            ax.text(b.get_x() + b.get_width() / 2, v + 0.15, f"{v:.1f}", ha="center", fontsize=6.5)
-    ax.set_xticks(xs, names)
-    ax.set_ylabel("angle (deg)")
+            ax.text(b.get_x() + b.get_width() / 2, v + 0.15, f"{v:.1f}", ha="center", fontsize=8)
+    ax.set_xticks(xs, names, fontsize=9)
+    ax.set_ylabel("angle (deg)", fontsize=9)
     ax.set_title("hover trim of the three cases (thrust = weight)", fontsize=10)
-    ax.legend(fontsize=7.5, loc="upper left")
-    ax.set_ylim(0, 1.15 * vals.max())
+    ax.legend(fontsize=8, loc="upper left")
+    ax.set_ylim(0, 1.4 * vals.max())
+    ax.tick_params(axis="y", labelsize=8)
     series = (np.degrees(data.collective),) + tuple(np.degrees(data.equilibrium.T))
-    for s, name, style in zip(series, names, ("o-", "s-", "^-", "d-")):
-        ax2.plot(data.cg, s, style, ms=4, label=name)
+    styles = [("k", "-", "o")] + [(HINGE_COLORS[h], HINGE_LINESTYLES[h], m)
+                                  for h, m in zip(_HINGES, ("s", "^", "d"))]
+    for s, name, (c, ls, m) in zip(series, names, styles):
+        ax2.plot(data.cg, s, color=c, ls=ls, marker=m, ms=4, label=name)
     ax2.axvline(data.pitch_axis, color="0.5", ls="--", lw=0.8)
-    ax2.axvline(data.aerodynamic_centre, color="tab:green", ls=":", lw=1)
-    y = ax2.get_ylim()[1]
-    ax2.text(data.pitch_axis, y, " pitch axis", fontsize=7, va="top", color="0.4")
-    ax2.text(data.aerodynamic_centre, 0.93 * y, "aero. centre ", fontsize=7, va="top", ha="right",
-             color="tab:green")
-    ax2.set_xlabel("section C.G. position (fraction of chord behind the leading edge)")
-    ax2.set_ylabel("angle (deg)")
+    ax2.axvline(data.aerodynamic_centre, color="0.2", ls=":", lw=1.2)
+    lo, hi = ax2.get_ylim()
+    ax2.set_ylim(lo, hi + 0.12 * (hi - lo))
+    ax2.text(data.pitch_axis, 0.98, " pitch axis", fontsize=8, va="top", color="0.4",
+             transform=ax2.get_xaxis_transform())
+    ax2.text(data.aerodynamic_centre, 0.98, "aero. centre ", fontsize=8, va="top", ha="right", color="0.2",
+             transform=ax2.get_xaxis_transform())
+    ax2.set_xlabel("section C.G. (fraction of chord behind the leading edge)", fontsize=9)
+    ax2.set_ylabel("angle (deg)", fontsize=9)
     ax2.set_title("C.G. sweep", fontsize=10)
-    ax2.legend(fontsize=7.5, loc="lower left")
+    ax2.tick_params(labelsize=8)
+    # in the band between the lag and pitch angles, right of the collective's crossing
+    y_leg = (ax2.transScale + ax2.transLimits).transform((0.0, 0.5 * (series[2].min() + series[3].max())))[1]
+    ax2.legend(fontsize=8, loc="center right", bbox_to_anchor=(1.0, y_leg), framealpha=0.9)
 
 
-def figure_hover_trim(data: HoverTrimData, figsize=(11, 4.2)):
-    """The book's Fig. 4 (:func:`plot_hover_trim` on two panels), laid out; returns the Figure."""
-    fig, axes = subplots(1, 2, figsize=figsize)
+def figure_hover_trim(data: HoverTrimData, figsize=(9.0, 4.2)):
+    """The book's Fig. 4 (:func:`plot_hover_trim` on two panels), laid out and checked
+    (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    fig, axes = subplots(1, 2, figsize=figsize, gridspec_kw=dict(width_ratios=(1.2, 1)))
     plot_hover_trim(data, axes)
-    fig.tight_layout()
-    return fig
+    return finish(fig)
 
 
 @dataclass(frozen=True)
@@ -517,7 +548,7 @@ class HoverModesData:
         """The modes table (eigenvalue; sizes of the flap, lag and pitch angles, largest = 1),
         the decay time of ``decay_case``'s least-damped mode and the pitch modes without the
         aerodynamic pitch damping (3 decimals per rev)."""
-        lines = ["case       C.G.   eigenvalue (per rad of azimuth, i.e. in Omega; freq. in /rev)   "
+        lines = ["case       C.G.   eigenvalue (per rev, i.e. in units of Omega; freq. in /rev)     "
                  "|beta| |zeta| |theta|"]
         for name, cg, modes in zip(self.case_names, self.case_cg, self.modes):
             for m in modes:
@@ -848,40 +879,85 @@ def hover_rate_data(
     )
 
 
+def _label_line_ends(ax, x: float, ys, labels, *, min_gap: float = 0.075, **text_kw) -> None:
+    """Label curves at their right end ``x``: curves that end at the same height (within 0.02 of
+    the axes height) share one label (``+q`` and ``-q`` become ``±q``; ``labels`` are TeX
+    without the ``$``), and the labels are spread to at least ``min_gap`` of the axes height
+    apart, so that none overlaps another. The axes' scale and limits must be final."""
+    from matplotlib.transforms import ScaledTranslation, blended_transform_factory
+
+    to_axes = ax.transScale + ax.transLimits
+    frac = np.array([to_axes.transform((x, float(y)))[1] for y in ys])
+    groups: list[list[int]] = []
+    for i in np.argsort(frac):
+        if groups and frac[i] - frac[groups[-1][-1]] < 0.02:
+            groups[-1].append(int(i))
+        else:
+            groups.append([int(i)])
+    texts, pos = [], []
+    for g in groups:
+        names = [labels[i] for i in g]
+        bodies = {n.lstrip("+-") for n in names}
+        if len(g) > 1 and len(bodies) == 1 and {n[0] for n in names} == {"+", "-"}:
+            texts.append(r"$\pm " + bodies.pop() + "$")
+        else:
+            texts.append(", ".join(f"${n}$" for n in names))
+        pos.append(float(np.mean(frac[g])))
+    for j in range(1, len(pos)):
+        pos[j] = max(pos[j], pos[j - 1] + min_gap)
+    over = pos[-1] - 0.97 if pos else 0.0
+    if over > 0:
+        pos = [max(p - over, 0.03 + k * min_gap) for k, p in enumerate(pos)]
+    tr = blended_transform_factory(ax.transData, ax.transAxes) + ScaledTranslation(
+        4 / 72, 0, ax.figure.dpi_scale_trans)
+    for t, p in zip(texts, pos):
+        ax.text(x, p, t, transform=tr, va="center", **text_kw)
+
+
 def plot_hover_rate(data: HoverRateData, axes) -> None:
     """Four panels: (a) ``W'`` against the C.G. in both readings; (b) the linear verdict;
     (c) the sign of ``W'`` on the (pitch, flap-rate) plane; (d) which work rates make the
-    strict maximum positive."""
+    strict maximum positive, one point per C.G. and work rate."""
     ax_a, ax_b, ax_c, ax_d = axes
     cg = data.cg
+    span = cg[-1] - cg[0] if cg.size > 1 else 0.01
     ax_a.plot(cg, data.strict_max, "o-", color="tab:red",
-              label=f"{data.strict_label}: max $W'$ on the sphere")
+              label=f"{data.strict_label}:\nmax $W'$ on the sphere")
     ax_a.plot(cg, data.practical_max, "s-", color="tab:blue",
-              label=f"{data.practical_label}: max $W'$ over the 12 axes")
+              label=f"{data.practical_label}:\nmax $W'$ over the 12 axes")
     rate_idx = [i for i, d in enumerate(data.test_disturbances) if np.abs(d[3:]).max() > 0.5]
     for i in rate_idx:
-        k = int(np.argmax(np.abs(data.test_disturbances[i])))
-        sgn = "+" if data.test_disturbances[i, k] > 0 else "-"
-        ax_a.plot(cg, data.practical_dW[:, i], ":", lw=1, color="tab:blue", alpha=0.6)
-        ax_a.annotate(sgn + STATE_LABELS[k], (cg[-1], data.practical_dW[-1, i]), fontsize=6.5,
-                      color="tab:blue", xytext=(3, 0), textcoords="offset points", va="center")
+        ax_a.plot(cg, data.practical_dW[:, i], ":", lw=1.2, color="tab:blue", alpha=0.7)
     ax_a.set_yscale("symlog", linthresh=10.0)
     ax_a.axhline(0, color="k", lw=0.6)
-    ax_a.set_xlabel("section C.G. (fraction of chord)")
-    ax_a.set_ylabel(r"$W'$ on $\|x\| = A$ (J/rad)")
+    lo = min(float(np.min(data.practical_dW)), -10.0)
+    hi = max(float(np.max(data.strict_max)), 10.0)
+    # two decades above the data, for the legend
+    ax_a.set_ylim(2.0 * lo, 150.0 * hi)
+    ax_a.set_xlim(cg[0] - 0.05 * span, cg[-1] + 0.16 * span)
+    _label_line_ends(ax_a, float(cg[-1]), data.practical_dW[-1, rate_idx],
+                     [disturbance_names(data.test_disturbances[i:i + 1])[0] for i in rate_idx],
+                     fontsize=8.5, color="tab:blue")
+    ax_a.set_xlabel("section C.G. (fraction of chord)", fontsize=9)
+    ax_a.set_ylabel(r"$W'$ on $\|x\| = A$ (J/rad)", fontsize=9)
     ax_a.set_title("(a) $W'$ in hover; dotted: each rate axis (practical)", fontsize=9)
-    ax_a.legend(fontsize=6.5, loc="lower left")
-    ax_b.plot(cg, data.eig_max_real, "o-", color="k", label="least-damped mode (largest real part)")
+    ax_a.legend(fontsize=8, loc="upper left")
+    ax_b.plot(cg, data.eig_max_real, "o-", color="k", label="least-damped mode (largest real part);\n"
+              "number: its frequency (per rev)")
     if np.isfinite(data.eig_real_root).any():
         ax_b.plot(cg, data.eig_real_root, "^--", color="tab:purple", label="largest real root (divergence if > 0)")
     ax_b.axhline(0, color="k", lw=0.6)
-    ax_b.fill_between(cg, 0, max(0.05, 1.1 * float(np.nanmax(data.eig_max_real))), color="tab:red", alpha=0.07)
+    top = max(0.05, 1.1 * float(np.nanmax(data.eig_max_real)))
+    ax_b.fill_between(cg, 0, top, color="tab:red", alpha=0.07)
     for c, r, f in zip(cg, data.eig_max_real, data.eig_freq):
-        ax_b.annotate(f"{f:.2f}/rev", (c, r), fontsize=6, xytext=(0, 5), textcoords="offset points", ha="center")
-    ax_b.set_xlabel("section C.G. (fraction of chord)")
-    ax_b.set_ylabel(r"eigenvalue real part ($\Omega$)")
+        ax_b.annotate(f"{f:.2f}", (c, r), fontsize=8, xytext=(0, -6), textcoords="offset points", ha="center",
+                      va="top")
+    lo_b = float(np.nanmin(data.eig_max_real))
+    ax_b.set_ylim(lo_b - 0.35 * (top - lo_b), top + 0.6 * (top - lo_b))
+    ax_b.set_xlabel("section C.G. (fraction of chord)", fontsize=9)
+    ax_b.set_ylabel("growth rate (per rev)", fontsize=9)
     ax_b.set_title("(b) linearised hover: unstable above zero", fontsize=9)
-    ax_b.legend(fontsize=7, loc="upper left")
+    ax_b.legend(fontsize=8, loc="upper left")
     ext = [data.slice_theta[0], data.slice_theta[-1], data.slice_betadot[0], data.slice_betadot[-1]]
     from matplotlib.colors import TwoSlopeNorm
 
@@ -893,33 +969,52 @@ def plot_hover_rate(data: HoverRateData, axes) -> None:
                   hatches=["...."])
     t = np.linspace(0, 2 * np.pi, 361)
     ax_c.plot(data.A * np.cos(t), data.A * np.sin(t), color="tab:green", lw=1.5, label=r"$\|x\| = A$")
-    ax_c.set_xlabel(r"pitch displacement $\theta / a_\theta$")
-    ax_c.set_ylabel(r"flap rate $\beta' / a_{\beta'}$")
-    ax_c.set_title(f"(c) $W'$ on the ($\\theta$, $\\beta'$) plane, C.G. {data.slice_cg:.3g} c (dotted: $W' > 0$)", fontsize=9)
-    ax_c.legend(fontsize=7, loc="upper right")
-    cb = ax_c.figure.colorbar(im, ax=ax_c, label="$W'$ (J/rad); two linear scales either side of 0", shrink=0.85)
+    ax_c.set_xlabel(r"pitch displacement $\theta / a_\theta$", fontsize=9)
+    ax_c.set_ylabel(r"flap rate $\beta' / a_{\beta'}$", fontsize=9)
+    ax_c.set_title(f"(c) $W'$ on the ($\\theta$, $\\beta'$) plane, C.G. {data.slice_cg:.3g} c\n"
+                   "dotted: $W' > 0$", fontsize=9)
+    ax_c.legend(fontsize=8, loc="upper right")
+    cb = ax_c.figure.colorbar(im, ax=ax_c, shrink=0.9)
+    cb.set_label("$W'$ (J/rad); a linear scale\neach side of 0", fontsize=9)
     cb.set_ticks([lo, 0.5 * lo, 0.0, 0.5 * hi, hi])
     cb.set_ticklabels([f"{v:.0f}" for v in (lo, 0.5 * lo, 0.0, 0.5 * hi, hi)])
-    width = 0.8 / len(cg)
-    xs = np.arange(6)
-    vals = np.concatenate([data.terms_damping, data.terms_aero], axis=1)
-    cmap = _colormaps()["viridis"]
-    for i, c in enumerate(cg):
-        ax_d.bar(xs + (i - (len(cg) - 1) / 2) * width, vals[i], width, color=cmap(i / max(len(cg) - 1, 1)),
-                 label=f"{c:.3g} c")
-    ax_d.set_xticks(xs, [f"damper\n{h}" for h in _HINGES] + [f"aero\n{h}" for h in _HINGES], fontsize=7)
+    cb.ax.tick_params(labelsize=8)
+    vals = np.concatenate([data.terms_aero, data.terms_damping], axis=1)
+    names = [f"aero {h}" for h in _HINGES] + [f"damper {h}" for h in _HINGES]
+    colors = [HINGE_COLORS[h] for h in _HINGES] * 2
+    markers = ["o", "s", "^"] * 2
+    scale = float(np.abs(vals).max()) or 1.0
+    zero = [k for k in range(vals.shape[1]) if np.abs(vals[:, k]).max() < 1e-6 * scale]
+    for k in range(vals.shape[1]):
+        if k in zero:
+            continue
+        aero = k < 3
+        ax_d.plot(cg, vals[:, k], ls="-" if aero else "--", marker=markers[k], ms=4.5, color=colors[k],
+                  mfc=colors[k] if aero else "white", label=names[k])
+    if zero:
+        ax_d.plot(cg, np.zeros_like(cg), ls=":", color="0.4", label="0: " + ", ".join(names[k] for k in zero))
+    ax_d.set_yscale("symlog", linthresh=0.01)
     ax_d.axhline(0, color="k", lw=0.6)
-    ax_d.set_ylabel("work rate at the strict argmax (J/rad)")
-    ax_d.set_title("(d) why $W' > 0$: work rates per hinge", fontsize=9)
-    ax_d.legend(fontsize=6, ncol=2, title="C.G.", title_fontsize=6.5)
+    ax_d.set_ylim(-3 * max(float(-vals.min()), 0.01), 10 * max(float(vals.max()), 0.01))
+    ax_d.set_xlabel("section C.G. (fraction of chord)", fontsize=9)
+    ax_d.set_ylabel("work rate at the strict argmax (J/rad)", fontsize=9)
+    ax_d.set_title("(d) why $W' > 0$: work rates per hinge\n(solid: aerodynamic load change; dashed: damper)",
+                   fontsize=9)
+    # the legend in the empty band between the small terms and the large one, centred on 0.3 J/rad
+    y_leg = (ax_d.transScale + ax_d.transLimits).transform((0.0, 0.3))[1]
+    ax_d.legend(fontsize=8, loc="center", bbox_to_anchor=(0.5, y_leg), ncol=2)
+    for ax in (ax_a, ax_b, ax_d):
+        ax.tick_params(labelsize=8)
+        ax.set_xticks(cg[::2])
+    ax_c.tick_params(labelsize=8)
 
 
-def figure_hover_rate(data: HoverRateData, figsize=(11.5, 8.6)):
-    """The book's Fig. 5 (:func:`plot_hover_rate` on a 2 x 2 grid), laid out; returns the Figure."""
+def figure_hover_rate(data: HoverRateData, figsize=(9.0, 8.8)):
+    """The book's Fig. 5 (:func:`plot_hover_rate` on a 2 x 2 grid), laid out and checked
+    (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
     fig, axes = subplots(2, 2, figsize=figsize)
     plot_hover_rate(data, axes.ravel())
-    fig.tight_layout()
-    return fig
+    return finish(fig)
 
 
 @dataclass(frozen=True)
@@ -1239,8 +1334,8 @@ def w_spheres_data(cg="forward", mu: float = 0.15, A_values=(0.5, 1.0, 2.0, 4.0,
 
 
 def plot_w_spheres(data: WSpheresData, axes) -> None:
-    """Left: inf and sup of ``W`` against azimuth for each ``A`` (log scale); right: the same
-    divided by ``A^2``, against ``A``."""
+    """(a) inf and sup of ``W`` against azimuth for each ``A`` (log scale); (b) the same
+    divided by ``A^2``, against ``A``. Each legend to the right of its panel."""
     ax, ax2 = axes
     deg = np.degrees(data.psi)
     cmap = _colormaps()["plasma"]
@@ -1252,32 +1347,40 @@ def plot_w_spheres(data: WSpheresData, axes) -> None:
         ax.plot(deg, data.strict_sup[i], "-", color=c, lw=1.5)
         ax.plot(deg, data.practical_min[i], "--", color=c, lw=1)
         ax.plot(deg, data.practical_max[i], "--", color=c, lw=1)
-    ax.plot([], [], "k-", label=f"inf / sup over the sphere: {data.strict_label}")
-    ax.plot([], [], "k--", label=f"min / max over the 12 axes: {data.practical_label}")
+    ax.plot([], [], "k-", label=f"inf / sup over the sphere:\n{data.strict_label}")
+    ax.plot([], [], "k--", label=f"min / max over the 12 axes:\n{data.practical_label}")
     ax.set_yscale("log")
-    ax.set_xlabel(r"azimuth $\psi$ (deg)")
-    ax.set_ylabel(r"$W(\psi, x)$ on $\|x\| = A$ (J)")
-    ax.set_xticks(np.arange(0, 361, 90))
+    ax.set_xlabel(r"azimuth $\psi$ (deg)", fontsize=9)
+    ax.set_ylabel(r"$W(\psi, x)$ on $\|x\| = A$ (J)", fontsize=9)
+    ax.set_xticks(np.arange(0, 361, 45))
+    ax.set_xlim(0, 360)
     ax.set_title(f"(a) $W$ at $\\mu$ = {data.mu:g}, {data.cg} C.G.", fontsize=9)
-    ax.legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=4)
+    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
     A = data.A_values
-    for arr, style, lab in ((data.strict_inf, "o-", "inf (sphere)"), (data.strict_sup, "s-", "sup (sphere)"),
-                            (data.practical_min, "o--", "min (12 axes)"), (data.practical_max, "s--", "max (12 axes)")):
-        ax2.plot(A, arr.mean(axis=1) / A ** 2, style, ms=4, label=lab)
+    # strict: solid, large open markers; practical: dashed, small filled ones (they often coincide)
+    for arr, c, strict, lab in ((data.strict_inf, "#0072B2", True, "inf (sphere)"),
+                                (data.strict_sup, "#D55E00", True, "sup (sphere)"),
+                                (data.practical_min, "#0072B2", False, "min (12 axes)"),
+                                (data.practical_max, "#D55E00", False, "max (12 axes)")):
+        ax2.plot(A, arr.mean(axis=1) / A ** 2, "-" if strict else "--", marker="o" if strict else "s",
+                 ms=8 if strict else 3.5, mfc="none" if strict else c, color=c, label=lab)
     ax2.set_xscale("log", base=2)
     ax2.set_yscale("log")
-    ax2.set_xlabel("bound $A$")
-    ax2.set_ylabel(r"azimuth mean of $W / A^2$ (J)")
+    ax2.set_xticks(A, [f"{v:g}" for v in A])
+    ax2.set_xlabel("bound $A$", fontsize=9)
+    ax2.set_ylabel(r"azimuth mean of $W / A^2$ (J)", fontsize=9)
     ax2.set_title("(b) $W / A^2$: nearly constant, so $W \\propto A^2$", fontsize=9)
-    ax2.legend(fontsize=7)
+    ax2.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    for a in (ax, ax2):
+        a.tick_params(labelsize=8)
 
 
-def figure_w_spheres(data: WSpheresData, figsize=(11.5, 4.3)):
-    """The book's Fig. 6 (:func:`plot_w_spheres`, the azimuth panel wider), laid out; returns the Figure."""
-    fig, axes = subplots(1, 2, figsize=figsize, gridspec_kw=dict(width_ratios=(1.6, 1)))
+def figure_w_spheres(data: WSpheresData, figsize=(8.6, 6.6)):
+    """The book's Fig. 6 (:func:`plot_w_spheres`, the azimuth panel above the other), laid out
+    and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    fig, axes = subplots(2, 1, figsize=figsize, gridspec_kw=dict(height_ratios=(1.4, 1)))
     plot_w_spheres(data, axes)
-    fig.tight_layout()
-    return fig
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------
@@ -1403,24 +1506,28 @@ def plot_rate_azimuth(data: RateAzimuthData, axes) -> None:
         ax.set_yscale("symlog", linthresh=1.0)
         ax.axvspan(0, 180, color="tab:orange", alpha=0.05)
         ax.axvspan(180, 360, color="tab:blue", alpha=0.05)
-        ax.text(90, 0.02, "advancing", transform=ax.get_xaxis_transform(), ha="center", fontsize=7, color="tab:orange")
-        ax.text(270, 0.02, "retreating", transform=ax.get_xaxis_transform(), ha="center", fontsize=7, color="tab:blue")
-        ax.set_xticks(np.arange(0, 361, 45))
+        ax.text(90, 0.02, "advancing", transform=ax.get_xaxis_transform(), ha="center", fontsize=8, color="tab:orange")
+        ax.text(270, 0.02, "retreating", transform=ax.get_xaxis_transform(), ha="center", fontsize=8, color="tab:blue")
+        ax.set_xticks(np.arange(0, 361, 90))
         ax.set_xlim(0, 360)
-        ax.set_xlabel(r"azimuth $\psi$ (deg)")
+        ax.set_xlabel(r"azimuth $\psi$ (deg)", fontsize=9)
         where = "the sphere" if reading == "strict" else "the 12 axes"
-        ax.set_ylabel(rf"max $W'$ over {where}, $\|x\| = A$ (J/rad)")
-        ax.set_title((data.strict_label if reading == 'strict' else data.practical_label), fontsize=9)
-    axes[0].legend(fontsize=7, ncol=2, loc="center right")
+        label = data.strict_label if reading == "strict" else data.practical_label
+        ax.set_title(f"{label}:\nmax $W'$ over {where}", fontsize=9)
+        ax.tick_params(labelsize=8)
+    axes[0].set_ylabel(r"max $W'$ on $\|x\| = A$ (J/rad)", fontsize=9)
+    # the legend in the empty decade below the hover line of the strict panel, centred on 10 J/rad
+    y_leg = (axes[0].transScale + axes[0].transLimits).transform((0.0, 10.0))[1]
+    axes[0].legend(fontsize=8, ncol=3, loc="center", bbox_to_anchor=(0.5, y_leg), handlelength=1.5,
+                   columnspacing=1.0)
 
 
-def figure_rate_azimuth(data: RateAzimuthData, figsize=(12, 4.3)):
+def figure_rate_azimuth(data: RateAzimuthData, figsize=(9.0, 4.2)):
     """The book's Fig. 7 (:func:`plot_rate_azimuth`, one panel per reading, shared ``W'`` axis),
-    laid out; returns the Figure."""
+    laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
     fig, axes = subplots(1, 2, figsize=figsize, sharey=True)
     plot_rate_azimuth(data, axes)
-    fig.tight_layout()
-    return fig
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------
@@ -1591,16 +1698,58 @@ def _category_cmap():
     return ListedColormap(CATEGORY_COLORS), BoundaryNorm(np.arange(-0.5, 4.5), 4)
 
 
+def _draw_categories(ax, x_edges, y_edges, category) -> None:
+    """The verdict map: each cell in its category's colour (:data:`CATEGORY_COLORS`) and hatch
+    (:data:`CATEGORY_HATCHES`), the second cue that keeps the map readable in grey print. The
+    hatches are drawn cell by cell (straight edges, as ``pcolormesh`` draws the cells, in polar
+    axes too), so they follow the cells exactly."""
+    from matplotlib.collections import PolyCollection
+
+    cmap, norm = _category_cmap()
+    ax.pcolormesh(x_edges, y_edges, category, cmap=cmap, norm=norm, shading="flat")
+    cat = np.asarray(category)
+    for k, hatch in enumerate(CATEGORY_HATCHES):
+        if not hatch:
+            continue
+        rows, cols = np.nonzero(cat == k)
+        if rows.size == 0:
+            continue
+        x0, x1 = x_edges[cols], x_edges[cols + 1]
+        y0, y1 = y_edges[rows], y_edges[rows + 1]
+        verts = np.stack([np.column_stack(v) for v in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))], axis=1)
+        cells = PolyCollection(verts, facecolors="none", edgecolors="none", linewidths=0.0, hatch=hatch,
+                               hatchcolor=_HATCH_COLOR)
+        cells.set_hatch_linewidth(_HATCH_LINEWIDTH)
+        ax.add_collection(cells, autolim=False)
+
+
+def _reverse_flow(ax, th, rb, top) -> None:
+    """Hatch (:data:`REVERSE_FLOW_HATCH`) and outline the region ``rb <= r <= top`` over the
+    azimuths ``th`` where ``rb <= top``: where reverse flow reaches the blade root."""
+    import matplotlib.patheffects as pe
+
+    ok = rb <= top
+    if not ok.any():
+        return
+    ax.fill_between(th[ok], rb[ok], top, facecolor="none", edgecolor="k", hatch=REVERSE_FLOW_HATCH, lw=0.0)
+    t, r = th[ok], rb[ok]
+    # the outline: the boundary, then back along the rim (white-edged, to stand out on any colour)
+    ax.plot(np.concatenate([t, np.linspace(t[-1], t[0], 90)]), np.concatenate([r, np.full(90, top)]),
+            "k-", lw=1.5, path_effects=[pe.withStroke(linewidth=3.0, foreground="w")], clip_on=False)
+
+
 def plot_regions_polar(data: RegionsData, ax, case_index: int = 0, *, title: str | None = None) -> None:
     """The verdict on the rotor disc seen from above: azimuth as angle, radius = mu.
 
     ``psi = 0`` points to the tail (bottom), rotation counter-clockwise, so the advancing
-    side (``psi = 90 deg``) is on the right; hatched: where reverse flow reaches the
-    blade root (``mu |sin psi| > (R - R1)/R`` on the retreating side). A
-    ``mu = 0`` row (hover) is drawn as a central disc below ``r = 0``, so that the radius
-    of every other row is exactly its advance ratio.
+    side (``psi = 90 deg``) is on the right; each verdict in its colour and hatch; hatched
+    with vertical lines and outlined: where reverse flow reaches the blade root
+    (``mu |sin psi| > (R - R1)/R`` on the retreating side). A ``mu = 0`` row (hover) is drawn
+    as a central disc below ``r = 0``, so that the radius of every other row is exactly its
+    advance ratio.
     """
-    cmap, norm = _category_cmap()
+    import matplotlib.patheffects as pe
+
     ax.set_theta_zero_location("S")
     ax.set_theta_direction(1)
     mu = data.mu_values
@@ -1613,59 +1762,57 @@ def plot_regions_polar(data: RegionsData, ax, case_index: int = 0, *, title: str
         # below r = 0 (the radial axis starts at -hole), so that radius = mu stays exact.
         hole = 0.12 * r_edges[-1]
         r_edges = np.concatenate([[-hole], r_edges[1:]])
-    ax.pcolormesh(th_edges, r_edges, data.category[case_index], cmap=cmap, norm=norm, shading="flat")
+    _draw_categories(ax, th_edges, r_edges, data.category[case_index])
     th = np.linspace(np.pi, 2 * np.pi, 361)
     rb = data.root_r_over_R / np.maximum(-np.sin(th), 1e-9)
     rmax = r_edges[-1]
-    ok = rb <= rmax
-    if ok.any():
-        ax.fill_between(th[ok], rb[ok], rmax, facecolor="none", edgecolor="k", hatch="///", lw=0.0, alpha=0.6)
-        ax.plot(th[ok], rb[ok], "k-", lw=0.8)
+    _reverse_flow(ax, th, rb, rmax)
     ax.set_ylim(-hole, rmax)
     ticks = [m for m in (0.05, 0.1, 0.15, 0.2, 0.25) if m <= rmax]
     ax.set_yticks(ticks)
     ax.set_yticklabels([f"{m:g}" for m in ticks])
-    ax.tick_params(axis="y", labelsize=6)
-    ax.set_rlabel_position(135)
-    ax.set_xticks(np.radians(np.arange(0, 360, 45)))
+    ax.tick_params(axis="y", labelsize=8)
+    ax.set_rlabel_position(157.5)
     names = {0: "0°\ntail", 90: "90°\nadvancing", 180: "nose\n180°", 270: "retreating\n270°"}
     ax.set_xticks(np.radians(np.arange(0, 360, 45)))
-    ax.set_xticklabels([names.get(d, f"{d}°") for d in range(0, 360, 45)], fontsize=7)
+    ax.set_xticklabels([names.get(d, f"{d}°") for d in range(0, 360, 45)], fontsize=8)
+    ax.tick_params(axis="x", pad=2)
     for lab in ax.get_xticklabels():
+        # the side labels are wide: anchor them at their inner edge, clear of the disc
         if "advancing" in lab.get_text():
-            lab.set_color("tab:orange")
+            lab.set(color="tab:orange", ha="left")
         elif "retreating" in lab.get_text():
-            lab.set_color("tab:blue")
+            lab.set(color="tab:blue", ha="right")
+    for lab in ax.get_yticklabels():
+        lab.set_path_effects([pe.withStroke(linewidth=2.5, foreground="w")])
     case = data.cases[case_index]
-    ax.set_title(title or f"{case} C.G.", fontsize=9, pad=18)
+    ax.set_title(title or f"{case} C.G.", fontsize=9, pad=20)
 
 
 def plot_regions_plane(data: RegionsData, ax, case_index: int = 0, *, title: str | None = None,
                        legend: bool = True) -> None:
-    """The verdict in the (psi, mu) plane, with the reverse-flow boundary."""
-    cmap, norm = _category_cmap()
+    """The verdict in the (psi, mu) plane, each verdict in its colour and hatch, with the
+    reverse-flow region (hatched with vertical lines and outlined)."""
     deg = np.degrees(data.psi)
     step = deg[1] - deg[0]
-    ax.pcolormesh(np.concatenate([deg - step / 2, [deg[-1] + step / 2]]), _edges(data.mu_values, lo=0.0),
-                  data.category[case_index], cmap=cmap, norm=norm, shading="flat")
+    top = _edges(data.mu_values, lo=0.0)[-1]
+    _draw_categories(ax, np.concatenate([deg - step / 2, [deg[-1] + step / 2]]), _edges(data.mu_values, lo=0.0),
+                     data.category[case_index])
     th = np.linspace(180, 360, 361)
     rb = data.root_r_over_R / np.maximum(-np.sin(np.radians(th)), 1e-9)
-    top = _edges(data.mu_values, lo=0.0)[-1]
-    ok = rb <= top
-    if ok.any():
-        ax.fill_between(th[ok], rb[ok], top, facecolor="none", edgecolor="k", hatch="///", lw=0.0, alpha=0.6)
-        ax.plot(th[ok], rb[ok], "k-", lw=0.8)
+    _reverse_flow(ax, th, rb, top)
     ax.axvline(180, color="k", lw=0.6, ls=":")
-    ax.text(90, 1.01, "advancing", transform=ax.get_xaxis_transform(), ha="center", fontsize=7, color="tab:orange")
-    ax.text(270, 1.01, "retreating", transform=ax.get_xaxis_transform(), ha="center", fontsize=7, color="tab:blue")
+    ax.text(90, 1.01, "advancing", transform=ax.get_xaxis_transform(), ha="center", fontsize=8, color="tab:orange")
+    ax.text(270, 1.01, "retreating", transform=ax.get_xaxis_transform(), ha="center", fontsize=8, color="tab:blue")
     ax.set_xlim(0, 360)
     ax.set_ylim(0, top)
     ax.set_xticks(np.arange(0, 361, 90))
-    ax.set_xlabel(r"azimuth $\psi$ (deg)")
-    ax.set_ylabel(r"advance ratio $\mu$")
-    ax.set_title(title or f"{data.cases[case_index]} C.G.", fontsize=9, pad=12)
+    ax.set_xlabel(r"azimuth $\psi$ (deg)", fontsize=9)
+    ax.set_ylabel(r"advance ratio $\mu$", fontsize=9)
+    ax.tick_params(labelsize=8)
+    ax.set_title(title or f"{data.cases[case_index]} C.G.", fontsize=9, pad=14)
     if legend:
-        ax.legend(handles=category_legend_handles(), fontsize=6.5, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+        ax.legend(handles=category_legend_handles(wrap=34), fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
 
 
 @dataclass(frozen=True)
@@ -1721,31 +1868,75 @@ def region_maps(cases=CASES, mu_practical=MU_GRID, mu_strict=MU_GRID_STRICT, *, 
     )
 
 
-def figure_regions_polar(*rows: RegionsData, figsize=(12, 8.6)):
-    """The book's Fig. 8 on the rotor disc: one row per :class:`RegionsData`, one polar panel
-    per case (:func:`plot_regions_polar`), the legend below; returns the Figure."""
-    ncols = max(len(r.cases) for r in rows)
+def _regions_grid(readings) -> tuple[int, int, list]:
+    """Panels of the region figures: with two or more readings one column per reading and one
+    row per case; with one reading its cases two to a row. Returns ``(nrows, ncols, panels)``,
+    ``panels`` a list of ``(index in the grid, reading, case index)``."""
+    ncases = max(len(r.cases) for r in readings)
+    if len(readings) > 1:
+        ncols, nrows = len(readings), ncases
+        panels = [(k * ncols + j, reg, k) for j, reg in enumerate(readings) for k in range(len(reg.cases))]
+    else:
+        ncols = min(2, ncases)
+        nrows = -(-ncases // ncols)
+        panels = [(k, readings[0], k) for k in range(len(readings[0].cases))]
+    return nrows, ncols, panels
+
+
+def _region_legend(fig, ncols: int, empty_ax=None):
+    """The category legend of a region figure: in ``empty_ax`` (a spare grid cell) if given,
+    else below the panels, two columns wide if the figure has two; returns the layout's
+    ``rect`` keyword."""
+    if empty_ax is not None:
+        empty_ax.axis("off")
+        fig.legend(handles=category_legend_handles(wrap=34), loc="center", fontsize=8,
+                   bbox_to_anchor=(0.5, 0.5), bbox_transform=empty_ax.transAxes)
+        return {}
+    two = ncols > 1
+    fig.legend(handles=category_legend_handles(wrap=None if two else 40), loc="lower center",
+               ncol=2 if two else 1, fontsize=8)
+    height = 3 * 0.2 + 0.15 if two else 5 * 0.2 + 0.4  # legend rows of 8 pt, 0.2 in each, and margins
+    return {"rect": (0, height / fig.get_size_inches()[1], 1, 1)}
+
+
+def figure_regions_polar(*readings: RegionsData, figsize=None):
+    """The book's Fig. 8 on the rotor disc (:func:`plot_regions_polar`): with two readings one
+    column per reading and one row per case, with one reading its cases two to a row; the
+    category legend below (or in a spare cell). ``figsize`` defaults to 4.3 in per column and
+    3.75 in per row plus the legend (8.6 x 12.0 in for the book's two readings of three cases).
+    Laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    nrows, ncols, panels = _regions_grid(readings)
+    spare = len(readings) == 1 and nrows * ncols > len(panels)
+    if figsize is None:
+        figsize = (4.3 * ncols, 3.75 * nrows + (0 if spare else 0.75 if ncols > 1 else 1.4))
     fig = figure(figsize=figsize)
-    for row, reg in enumerate(rows):
-        for k in range(len(reg.cases)):
-            ax = fig.add_subplot(len(rows), ncols, ncols * row + k + 1, projection="polar")
-            plot_regions_polar(reg, ax, k, title=f"{reg.cases[k]} C.G., {reg.label}")
-    fig.legend(handles=category_legend_handles(), loc="lower center", ncol=3, fontsize=8)
-    fig.tight_layout(rect=(0, 0.07, 1, 1))
-    return fig
+    for idx, reg, k in panels:
+        ax = fig.add_subplot(nrows, ncols, idx + 1, projection="polar")
+        plot_regions_polar(reg, ax, k, title=f"{reg.cases[k]} C.G., {reg.label}")
+    empty = fig.add_subplot(nrows, ncols, nrows * ncols) if spare else None
+    return finish(fig, **_region_legend(fig, ncols, empty))
 
 
-def figure_regions_plane(*rows: RegionsData, figsize=(13, 6.8)):
+def figure_regions_plane(*readings: RegionsData, figsize=None):
     """The maps of :func:`figure_regions_polar` in the (psi, mu) plane
-    (:func:`plot_regions_plane`); returns the Figure."""
-    ncols = max(len(r.cases) for r in rows)
-    fig, axes = subplots(len(rows), ncols, figsize=figsize, sharex=True, squeeze=False)
-    for row, reg in enumerate(rows):
-        for k in range(len(reg.cases)):
-            plot_regions_plane(reg, axes[row, k], k, title=f"{reg.cases[k]} C.G., {reg.label}", legend=False)
-    fig.legend(handles=category_legend_handles(), loc="lower center", ncol=3, fontsize=8)
-    fig.tight_layout(rect=(0, 0.08, 1, 1))
-    return fig
+    (:func:`plot_regions_plane`), in the same grid; ``figsize`` defaults to 4.3 in per column
+    and 2.75 in per row plus the legend (8.6 x 9.0 in for the book's two readings of three
+    cases). Laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    nrows, ncols, panels = _regions_grid(readings)
+    spare = len(readings) == 1 and nrows * ncols > len(panels)
+    if figsize is None:
+        figsize = (4.3 * ncols, 2.75 * nrows + (0 if spare else 0.75 if ncols > 1 else 1.4))
+    fig, axes = subplots(nrows, ncols, figsize=figsize, sharex=True, squeeze=False)
+    axes = axes.ravel()
+    for idx, reg, k in panels:
+        ax = axes[idx]
+        plot_regions_plane(reg, ax, k, title=f"{reg.cases[k]} C.G., {reg.label}", legend=False)
+        if not ax.get_subplotspec().is_last_row():
+            ax.set_xlabel("")
+        if not ax.get_subplotspec().is_first_col():
+            ax.set_ylabel("")
+    empty = axes[-1] if spare else None
+    return finish(fig, **_region_legend(fig, ncols, empty))
 
 
 @dataclass(frozen=True)
@@ -2052,25 +2243,34 @@ def sensitivity_data(cg="forward", mu_values=(0.0, 0.0125, 0.025, 0.05, 0.1, 0.1
 
 
 def plot_sensitivity(data: SensitivityData, axes) -> None:
-    """One (psi, mu) map per variant."""
+    """One (psi, mu) map per variant; the first spare axes, if any, holds the category legend.
+    Axis labels only on the outer panels of a grid."""
     axes = np.ravel(axes)
-    for k, (ax, name, reg) in enumerate(zip(axes, data.names, data.regions)):
+    for i, (ax, name, reg) in enumerate(zip(axes, data.names, data.regions)):
         plot_regions_plane(reg, ax, 0, title=name, legend=False)
-        if k % 4:
+        spec = ax.get_subplotspec()
+        if spec is None:
+            continue
+        if not spec.is_first_col():
             ax.set_ylabel("")
+        if i + spec.get_gridspec().ncols < len(data.names):
+            ax.set_xlabel("")  # another map below
+        else:
+            ax.tick_params(labelbottom=True)  # the lowest map of its column
     for ax in axes[len(data.names):]:
         ax.axis("off")
-        ax.legend(handles=category_legend_handles("reverse flow reaches the root"), fontsize=6.5, loc="center")
+        ax.legend(handles=category_legend_handles("reverse flow reaches the root", wrap=34), fontsize=8, loc="center")
         break
 
 
-def figure_sensitivity(data: SensitivityData, figsize=(14, 6.6)):
-    """The book's sensitivity figure (:func:`plot_sensitivity` on a 2 x 4 grid, shared axes),
-    laid out; returns the Figure."""
-    fig, axes = subplots(2, 4, figsize=figsize, sharex=True, sharey=True)
+def figure_sensitivity(data: SensitivityData, figsize=(8.6, 10.4)):
+    """The book's sensitivity figure (:func:`plot_sensitivity` on a grid two panels wide, shared
+    axes, the legend in the spare cell), laid out and checked
+    (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    nrows = (len(data.names) + 2) // 2
+    fig, axes = subplots(nrows, 2, figsize=figsize, sharex=True, sharey=True)
     plot_sensitivity(data, axes)
-    fig.tight_layout()
-    return fig
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------
@@ -2221,47 +2421,59 @@ def convergence_data(n_sphere_values=(0, 64, 256, 1024, 4096), n_stations_values
 
 def plot_convergence(data: ConvergenceData, axes) -> None:
     """(a) strict hover sup against n_sphere; (b) against n_stations, with the collective;
-    (c) the practical unstable fraction against mu for each azimuth grid."""
+    (c) the practical unstable fraction against mu for each azimuth grid. Each C.G. case in
+    its colour and marker."""
     ax_a, ax_b, ax_c = axes
     ns = np.where(data.n_sphere == 0, 1, data.n_sphere)
     dev = lambda v, ref: 100.0 * (v / ref - 1.0)  # noqa: E731
     for i, cg in enumerate(CASES):
-        ax_a.plot(ns, dev(data.sup_dW_hover[i], data.sup_dW_hover[i, -1]), "o-", ms=4, label=f"{cg} C.G.")
+        ax_a.plot(ns, dev(data.sup_dW_hover[i], data.sup_dW_hover[i, -1]), "-", marker=CG_MARKERS[cg], ms=5,
+                  color=CG_COLORS[cg], label=f"{cg} C.G.")
     ax_a.set_xscale("log", base=2)
+    ax_a.set_xticks(ns, [f"{v:d}" for v in ns])
     ax_a.axhline(0, color="0.5", lw=0.6)
-    ax_a.set_xlabel("quasi-random directions per sphere (1 = structured only)")
-    ax_a.set_ylabel("strict max $W'$ in hover: deviation from finest (%)")
+    ax_a.set_xlabel("quasi-random directions per sphere\n(1 = structured only)", fontsize=9)
+    ax_a.set_ylabel("strict max $W'$ in hover:\ndeviation from finest (%)", fontsize=9)
     ax_a.set_title("(a) sampling resolution", fontsize=9)
-    ax_a.legend(fontsize=7)
+    ax_a.legend(fontsize=8)
     st = data.n_stations
-    ax_b.plot(st, dev(data.sup_dW_stations, data.sup_dW_stations[-1]), "o-", label="strict max $W'$, hover")
-    ax_b.plot(st, dev(data.practical_rate_stations, data.practical_rate_stations[-1]), "s-",
-              label=rf"practical max $W'$, $\mu$ = {data.mu_check:g} (azimuth mean)")
+    ax_b.plot(st, dev(data.sup_dW_stations, data.sup_dW_stations[-1]), "o-", color="k", ms=4,
+              label="strict max $W'$, hover")
+    ax_b.plot(st, dev(data.practical_rate_stations, data.practical_rate_stations[-1]), "D-", color="#0072B2", ms=4,
+              label=f"practical max $W'$, $\\mu$ = {data.mu_check:g}\n(azimuth mean)")
     for i, cg in enumerate(CASES):
-        ax_b.plot(st, dev(data.collective[i], data.collective[i, -1]), "^--", ms=4, label=f"collective, {cg}")
+        ax_b.plot(st, dev(data.collective[i], data.collective[i, -1]), "--", marker=CG_MARKERS[cg], ms=4,
+                  color=CG_COLORS[cg], label=f"collective, {cg} C.G.")
     ax_b.axhline(0, color="0.5", lw=0.6)
-    ax_b.set_xlabel("spanwise stations")
-    ax_b.set_ylabel("deviation from 24 stations (%)")
+    ax_b.set_xticks(st)
+    ax_b.set_xlabel("spanwise stations", fontsize=9)
+    ax_b.set_ylabel(f"deviation from {st[-1]} stations (%)", fontsize=9)
     ax_b.set_title("(b) spanwise stations", fontsize=9)
-    ax_b.legend(fontsize=6.5)
+    lo, hi = ax_b.get_ylim()
+    ax_b.set_ylim(lo, hi + 0.75 * (hi - lo))  # room for the legend above the curves
+    ax_b.legend(fontsize=8, loc="upper right")
     for k, npsi in enumerate(data.n_psi):
         line, = ax_c.plot(data.mu_values, data.unstable_fraction_psi[k], "o-", ms=3,
                           label=f"not stable, {npsi} azimuths")
         ax_c.plot(data.mu_values, data.positive_fraction_psi[k], "s--", ms=3, color=line.get_color(),
                   label=f"$W' > 0$ on the sphere, {npsi} azimuths")
-    ax_c.set_xlabel(r"advance ratio $\mu$")
-    ax_c.set_ylabel("fraction of azimuths")
+    ax_c.set_xlabel(r"advance ratio $\mu$", fontsize=9)
+    ax_c.set_ylabel("fraction of azimuths", fontsize=9)
     ax_c.set_title(f"(c) azimuth grid (practical, {data.variant})", fontsize=9)
-    ax_c.legend(fontsize=7)
+    ax_c.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    for ax in axes:
+        ax.tick_params(labelsize=8)
 
 
-def figure_convergence(data: ConvergenceData, figsize=(14, 4.0)):
-    """The book's convergence figure (:func:`plot_convergence`, three panels), laid out;
-    returns the Figure."""
-    fig, axes = subplots(1, 3, figsize=figsize)
+def figure_convergence(data: ConvergenceData, figsize=(9.0, 7.4)):
+    """The book's convergence figure (:func:`plot_convergence`: (a) and (b) side by side, (c)
+    below them), laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the
+    Figure."""
+    fig = figure(figsize=figsize)
+    grid = fig.add_gridspec(2, 2, height_ratios=(1.1, 1))
+    axes = [fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), fig.add_subplot(grid[1, :])]
     plot_convergence(data, axes)
-    fig.tight_layout()
-    return fig
+    return finish(fig)
 
 
 # --------------------------------------------------------------------------------------
@@ -2291,8 +2503,10 @@ class ClaimsTable:
     rows: tuple
 
     def markdown(self) -> str:
-        """The table in Markdown (:func:`rotorlyap.figures.export.markdown_table`)."""
-        return markdown_table(self.header, self.rows)
+        """The table in Markdown (:func:`rotorlyap.figures.export.markdown_table`), its symbols
+        typeset (:func:`myst_math`)."""
+        return markdown_table([myst_math(h) for h in self.header],
+                              [[myst_math(c) for c in r] for r in self.rows])
 
     def summary(self) -> str:
         """One line per claim: its start and the start of each reading's verdict."""
@@ -2301,6 +2515,26 @@ class ClaimsTable:
             strict, practical = r[1].split(":")[0], r[2].split(":")[0]
             lines.append(f"{r[0][:60]:60s} | strict: {strict[:30]:30s} | practical: {practical[:30]}")
         return "\n".join(lines)
+
+
+_PLAIN_SYMBOLS = re.compile(r"\b(?:(max|min|inf|sup) )?W\b('?)|\bmu\b|\bA\^2\b|\bx = 0\b|\b1e-7\b")
+_KEEP = re.compile(r"(\$[^$]*\$|\{[a-z:]+\}`[^`]*`)")
+
+
+def myst_math(text: str) -> str:
+    """``text`` with its plain-text symbols typeset as MyST math: ``W'``, ``max W'``, ``inf W``,
+    ``mu``, ``A^2``, ``x = 0``, ``1e-7``; math and roles already in ``text`` are left alone."""
+    def sub(m: re.Match) -> str:
+        t = m.group(0)
+        if t == "mu":
+            return r"$\mu$"
+        if t == "1e-7":
+            return r"$10^{-7}$"
+        if m.group(1):
+            return "$\\%s W%s$" % (m.group(1), m.group(2))
+        return f"${t}$"
+    parts = _KEEP.split(text)
+    return "".join(p if i % 2 else _PLAIN_SYMBOLS.sub(sub, p) for i, p in enumerate(parts))
 
 
 def claims_table(convergence: ConvergenceData, w_spheres: WSpheresData, rate: RateAzimuthData,

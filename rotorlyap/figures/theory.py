@@ -247,11 +247,14 @@ def plot_phase_portrait(data: PhasePortraitData, ax, *, labels=("$y$", "$y'$")) 
     ax.set_xlabel(labels[0])
     ax.set_ylabel(labels[1])
     ax.set_aspect("equal")
-    ax.legend(loc="upper right", fontsize=7, framealpha=0.9)
+    # beside the axes, not over the motions
+    ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), fontsize=8, frameon=False,
+              borderaxespad=0.0)
 
 
 def figure_phase_portrait(data: PhasePortraitData, *, title: str | None = None) -> Figure:
-    """A new 7 x 4.2 in figure of :class:`PhasePortraitData` (:func:`plot_phase_portrait`).
+    """A new 7 x 4.4 in figure of :class:`PhasePortraitData` (:func:`plot_phase_portrait`), the
+    legend right of the axes.
 
     Parameters
     ----------
@@ -264,10 +267,10 @@ def figure_phase_portrait(data: PhasePortraitData, *, title: str | None = None) 
     matplotlib.figure.Figure
         Laid out and already closed in pyplot (a notebook shows it only where it is glued).
     """
-    fig, ax = subplots(figsize=(7, 4.2))
+    fig, ax = subplots(figsize=(7, 4.4))
     plot_phase_portrait(data, ax)
     if title is not None:
-        ax.set_title(title)
+        ax.set_title(title, fontsize=10)
     return finish(fig)
 
 
@@ -386,14 +389,14 @@ def plot_norm_history(data: NormHistoryData, ax, *, unit: str = "rev") -> None:
         ax.plot(p[0] / period, nrm[0, 0], "o", color=colors[i % len(colors)], ms=4,
                 label=rf"starts at $\psi_0 = {np.degrees(p[0]):.0f}^\circ$")
     ax.set_xlim(0, end / period)
-    ax.set_ylim(0, 1.15 * data.A)
+    ax.set_ylim(0, 1.6 * data.A)  # room above A for the legend
     ax.set_xlabel(r"azimuth $\psi$ / $2\pi$ (periods)")
     ax.set_ylabel(r"scaled norm $\|x(\psi)\|$")
-    ax.legend(loc="upper right", fontsize=8, ncol=2)
+    ax.legend(loc="upper right", fontsize=8, ncol=3, columnspacing=1.0, handlelength=1.5)
 
 
 def figure_norm_history(data: NormHistoryData) -> Figure:
-    """A new 8 x 3.6 in figure of :class:`NormHistoryData` (:func:`plot_norm_history`), titled
+    """A new 7 x 3.6 in figure of :class:`NormHistoryData` (:func:`plot_norm_history`), titled
     with the start radius.
 
     Returns
@@ -401,7 +404,7 @@ def figure_norm_history(data: NormHistoryData) -> Figure:
     matplotlib.figure.Figure
         Laid out and already closed in pyplot (a notebook shows it only where it is glued).
     """
-    fig, ax = subplots(figsize=(8, 3.6))
+    fig, ax = subplots(figsize=(7, 3.6))
     plot_norm_history(data, ax)
     ax.set_title(rf"Norm of motions started on ${data.fraction:g}\,\lambda_0(\psi_0)$")
     return finish(fig)
@@ -476,8 +479,9 @@ def level_set_data(
     )
 
 
-def plot_level_sets(data: LevelSetData, ax, *, labels=("$y$", "$y'$")) -> None:
-    """Draw the sign of ``W'``, the level set ``W = alpha`` and the three circles."""
+def plot_level_sets(data: LevelSetData, ax, *, labels=("$y$", "$y'$"), legend: bool = True) -> None:
+    """Draw the sign of ``W'``, the level set ``W = alpha`` and the three circles (and a legend
+    of them unless ``legend`` is False)."""
     ax.contourf(data.y, data.v, data.dW > 0, levels=[0.5, 1.5], colors=["tab:red"], alpha=0.25)
     ax.contour(data.y, data.v, data.dW, levels=[0.0], colors="tab:red", linewidths=1)
     ax.contour(data.y, data.v, data.W, levels=[data.alpha], colors="k", linewidths=1.5)
@@ -492,8 +496,9 @@ def plot_level_sets(data: LevelSetData, ax, *, labels=("$y$", "$y'$")) -> None:
     ax.set_xlabel(labels[0])
     ax.set_ylabel(labels[1])
     ax.set_aspect("equal")
-    ax.set_title(rf"$\psi = {np.degrees(data.psi):.0f}^\circ$")
-    ax.legend(loc="lower left", fontsize=7)
+    ax.set_title(rf"$\psi = {np.degrees(data.psi):.0f}^\circ$", fontsize=10)
+    if legend:
+        ax.legend(loc="lower left", fontsize=8)
 
 
 @dataclass(frozen=True)
@@ -559,17 +564,20 @@ def level_sets_data(
 
 
 def figure_level_sets(data: LevelSetsData) -> Figure:
-    """A new 11 x 5.4 in figure, the two panels of :class:`LevelSetsData` side by side.
+    """A new 7.6 x 4.2 in figure, the two panels of :class:`LevelSetsData` side by side over one
+    legend.
 
     Returns
     -------
     matplotlib.figure.Figure
         Laid out and already closed in pyplot (a notebook shows it only where it is glued).
     """
-    fig, axes = subplots(1, 2, figsize=(11, 5.4))
+    fig, axes = subplots(1, 2, figsize=(7.6, 4.2))
     for ax, panel in zip(axes, data.panels):
-        plot_level_sets(panel, ax)
-    return finish(fig)
+        plot_level_sets(panel, ax, legend=False)
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8,
+               frameon=False, handlelength=2.5)
+    return finish(fig, rect=(0, 0.08, 1, 1))
 
 
 @dataclass(frozen=True)
@@ -676,14 +684,14 @@ def plot_convergence(data: ConvergenceData, ax) -> None:
 
 
 def figure_convergence(data: ConvergenceData) -> Figure:
-    """A new 7.5 x 3.8 in figure of :class:`ConvergenceData` (:func:`plot_convergence`).
+    """A new 7 x 3.8 in figure of :class:`ConvergenceData` (:func:`plot_convergence`).
 
     Returns
     -------
     matplotlib.figure.Figure
         Laid out and already closed in pyplot (a notebook shows it only where it is glued).
     """
-    fig, ax = subplots(figsize=(7.5, 3.8))
+    fig, ax = subplots(figsize=(7, 3.8))
     plot_convergence(data, ax)
     return finish(fig)
 
@@ -751,14 +759,14 @@ def plot_start_region(data: StartRegionData, ax) -> None:
 
 
 def figure_start_region(data: StartRegionData) -> Figure:
-    """A new 8 x 3.6 in figure of :class:`StartRegionData` (:func:`plot_start_region`, two y axes).
+    """A new 7 x 3.6 in figure of :class:`StartRegionData` (:func:`plot_start_region`, two y axes).
 
     Returns
     -------
     matplotlib.figure.Figure
         Laid out and already closed in pyplot (a notebook shows it only where it is glued).
     """
-    fig, ax = subplots(figsize=(8, 3.6))
+    fig, ax = subplots(figsize=(7, 3.6))
     plot_start_region(data, ax)
     return finish(fig)
 
@@ -817,20 +825,20 @@ def plot_max_norm(data: MaxNormData, ax) -> None:
     ax.plot([], [], "o", color="0.3", ms=3, label="largest $\\|x\\| / A$ of one motion")
     ax.set_ylim(0, 1.1)
     ax.set_xlabel(r"start azimuth $\psi_0$ (deg)")
-    ax.set_ylabel(r"$\max_{\psi \geq \psi_0} \|x(\psi)\| / A$")
+    ax.set_ylabel(r"largest $\|x(\psi)\| / A$, $\psi \geq \psi_0$")
     ax.set_xticks(np.arange(0, 361, 45))
     ax.legend(loc="lower right", fontsize=8)
 
 
 def figure_max_norm(data: MaxNormData) -> Figure:
-    """A new 8 x 3.4 in figure of :class:`MaxNormData` (:func:`plot_max_norm`).
+    """A new 7 x 3.4 in figure of :class:`MaxNormData` (:func:`plot_max_norm`).
 
     Returns
     -------
     matplotlib.figure.Figure
         Laid out and already closed in pyplot (a notebook shows it only where it is glued).
     """
-    fig, ax = subplots(figsize=(8, 3.4))
+    fig, ax = subplots(figsize=(7, 3.4))
     plot_max_norm(data, ax)
     return finish(fig)
 
@@ -931,9 +939,9 @@ def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     Returns
     -------
     matplotlib.figure.Figure
-        8 x 4 in, laid out and closed in pyplot.
+        7.6 x 4.6 in, laid out and closed in pyplot; each panel's legend under it.
     """
-    fig, (ax, bx) = subplots(1, 2, figsize=(8, 4.0))
+    fig, (ax, bx) = subplots(1, 2, figsize=(7.6, 4.6))
     A = data.paper.A
     deg = data.psi_fine_deg
     grow = np.sqrt(data.growth / data.saturation)
@@ -954,7 +962,7 @@ def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     ax.set_xticks(np.arange(0, 361, 90))
     ax.set_xlabel(r"azimuth $\psi$ (deg)")
     ax.set_ylabel(r"$\|x\|$")
-    ax.legend(loc="upper left", bbox_to_anchor=(0.0, -0.22), fontsize=7, ncol=2, frameon=False)
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=8, frameon=False)
     for k in range(data.sim_norm.shape[1]):
         bx.plot(data.sim_psi, data.sim_norm[:, k] / A, color="tab:blue", lw=1)
     bx.axhline(1.0, color="tab:green", lw=2, label=r"$\|x\| = A$")
@@ -962,5 +970,5 @@ def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     bx.set_xlabel("revolutions after the start")
     bx.set_ylabel(r"$\|x\| / A$")
     bx.set_ylim(0, 1.1 * max(1.0, float(data.sim_norm.max() / A)))
-    bx.legend(loc="upper left", bbox_to_anchor=(0.0, -0.22), fontsize=7, ncol=2, frameon=False)
+    bx.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=8, frameon=False)
     return finish(fig)

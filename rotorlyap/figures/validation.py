@@ -51,9 +51,10 @@ from ..model.blade import Blade
 from ..model.modes import derived_quantities
 from ..model.parameters import BladeParameters
 from ..model.steady import disturbed_rhs, periodic_motion, tabulate_motion
-from ..reporting import decade_above, format_small, format_small_array
+from ..reporting import Rounded, decade_above, format_small, format_small_array
 from .export import markdown_table
-from .style import CATEGORY_COLORS, HINGE_COLORS, SCAN_EXTRA_COLORS, finish, subplots
+from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HINGE_COLORS,
+                    SCAN_EXTRA_COLORS, SCAN_EXTRA_HATCHES, figure, finish, subplots)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -63,7 +64,7 @@ __all__ = [
     "CONFUSION_HEADER", "grid_summary", "max_distance",
     "SteadyMotions", "steady_motions", "plot_steady_motions", "figure_steady_motions",
     "InflowData", "inflow_data", "FoldData", "fold_data",
-    "FloquetData", "floquet_data", "plot_floquet", "figure_floquet",
+    "FloquetData", "floquet_data", "plot_floquet", "figure_floquet", "floquet_legend_handles",
     "QuadraticData", "quadratic_data",
     "OriginData", "origin_data", "plot_origin", "figure_origin",
     "ScanData", "scan_data", "plot_scan", "figure_scan", "scan_legend_handles",
@@ -305,9 +306,12 @@ def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_
 def plot_steady_motions(data: SteadyMotions, axes, case_index: int = 0) -> None:
     """Flap, lag and pitch angles of the periodic motion of one case against azimuth (three
     panels, one line per advance ratio, dashed: the hover equilibrium), and in a fourth
-    panel the distance of the hover equilibrium from it against ``mu`` for every case."""
+    panel the distance of the hover equilibrium from it against ``mu`` for every case (colour
+    and marker per case; crosses: no periodic motion found). ``axes``: four Axes, in any
+    shape. The legend of the advance ratios is on the first panel (a figure may move it)."""
     import matplotlib.pyplot as plt
 
+    axes = np.asarray(axes).ravel()
     cmap = plt.get_cmap("viridis")
     mu = data.mu_values
     names = (r"flap $\beta$", r"lag $\zeta$", r"pitch $\theta$")
@@ -317,36 +321,52 @@ def plot_steady_motions(data: SteadyMotions, axes, case_index: int = 0) -> None:
             if not data.found[case_index, j]:
                 continue
             ax.plot(np.degrees(data.psi_plot), data.angles_deg[case_index, j, :, h],
-                    color=cmap(j / max(mu.size - 1, 1)), lw=1.0, label=f"$\\mu$ = {mu[j]:g}")
-        ax.axhline(data.hover_deg[case_index, h], color="k", ls="--", lw=1.0, label="hover equilibrium")
+                    color=cmap(j / max(mu.size - 1, 1)), lw=1.2, label=f"$\\mu$ = {mu[j]:g}")
+        ax.axhline(data.hover_deg[case_index, h], color="k", ls="--", lw=1.2, label="hover equilibrium")
         ax.set_xlim(0, 360)
         ax.set_xticks(np.arange(0, 361, 90))
         ax.set_xlabel(r"azimuth $\psi$ (deg)")
         ax.set_ylabel(names[h] + " (deg)")
-    axes[0].legend(fontsize=6, ncol=2)
+        ax.set_title(f"({'abc'[h]}) {names[h].split()[0]}, {data.cases[case_index]} C.G.", fontsize=10)
+    axes[0].legend(fontsize=8, ncol=2)
     ax = axes[3]
     for i, case in enumerate(data.cases):
         ok = data.found[i]
-        ax.plot(mu[ok], data.distance[i, ok], "o-", ms=3, label=f"{case} C.G.")
+        col, mk = CG_COLORS.get(case, "0.3"), CG_MARKERS.get(case, "o")
+        ax.plot(mu, np.where(ok, data.distance[i], np.nan), "-", marker=mk, ms=5, color=col,
+                label=f"{case} C.G.")  # broken where none is found
         if (~ok).any():
-            ax.plot(mu[~ok], np.zeros((~ok).sum()), "x", color=ax.lines[-1].get_color(), ms=6)
-    ax.axhline(DEFAULT_A, color="tab:green", lw=1.5, label="$A$")
+            ax.plot(mu[~ok], np.zeros((~ok).sum()), "x", color=col, ms=8, mew=1.5, clip_on=False,
+                    label="none found")
+    ax.axhline(DEFAULT_A, color="k", lw=1.0, ls="-.", label=f"$A$ = {DEFAULT_A:g}")
+    ax.set_ylim(0.0, 1.45 * max(np.nanmax(data.distance), DEFAULT_A))  # room for the legend
     ax.set_xlabel(r"advance ratio $\mu$")
-    ax.set_ylabel(r"$\max_\psi \|\xi(\psi) - \xi_{\mathrm{hover}}\|$")
-    ax.legend(fontsize=7)
+    ax.set_ylabel(r"$\max_\psi \|\xi(\psi) - \xi_{\mathrm{hover}}\|$ (norm units)")
+    ax.set_title("(d) distance of the hover equilibrium", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left", ncol=2, columnspacing=1.0)
 
 
 def figure_steady_motions(data: SteadyMotions, case_index: int = 0) -> Figure:
-    """The figure of :func:`plot_steady_motions` (four panels, 15 x 3.6 in), laid out and
-    closed in pyplot.
+    """The figure of :func:`plot_steady_motions` (four panels in two rows, 8.6 x 7.2 in, the
+    legend of the advance ratios below them), laid out and closed in pyplot.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
-    fig, axes = subplots(1, 4, figsize=(15, 3.6))
+    fig, axes = subplots(2, 2, figsize=(8.6, 7.2))
     plot_steady_motions(data, axes, case_index)
-    return finish(fig)
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    axes[0, 0].get_legend().remove()
+    leg = fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=8, frameon=False)
+    return finish(fig, rect=(0, _legend_height(fig, leg), 1, 1))
+
+
+def _legend_height(fig, legend, pad_in: float = 0.05) -> float:
+    """Height of a figure legend placed at the bottom, as a fraction of the figure's height
+    (for ``tight_layout(rect=(0, h, 1, 1))``)."""
+    fig.draw_without_rendering()
+    return (legend.get_window_extent().height / fig.dpi + pad_in) / fig.get_size_inches()[1]
 
 
 @dataclass(frozen=True)
@@ -569,46 +589,76 @@ def _hinge(name: str) -> str:
     return name.rstrip("+-0123456789")
 
 
+#: Marker of each hinge's tracks in :func:`plot_floquet` (the second cue to its colour).
+_HINGE_MARKERS = {"flap": "o", "lag": "s", "pitch": "^"}
+
+
 def plot_floquet(data: FloquetData, axes) -> None:
-    """Growth rates (top row) and frequencies (bottom row, branch resolved by continuity) of
-    the Floquet modes against ``mu``, one column per case. Solid with dots: about the
-    periodic motion; dotted: about the hover equilibrium (the paper's steady motion)."""
+    """Growth rates (left column) and frequencies (right column, branch resolved by continuity)
+    of the Floquet modes against ``mu``, one row per case. Solid with markers (colour and
+    marker per hinge): about the periodic motion; dotted: about the hover equilibrium (the
+    paper's steady motion); grey bands: no periodic motion found. ``axes``: (cases, 2).
+    The figure legend is :func:`floquet_legend_handles`."""
     for c, case in enumerate(data.cases):
-        for sw, style in ((data.periodic[c], dict(ls="-", marker="o", ms=2.5, lw=1.2)),
-                          (data.hover[c], dict(ls=":", lw=1.0))):
+        ax_g, ax_f = axes[c, 0], axes[c, 1]
+        for sw, style in ((data.periodic[c], dict(ls="-", ms=4, lw=1.3)),
+                          (data.hover[c], dict(ls=":", lw=1.3))):
             for t, name in enumerate(sw.names):
-                color = HINGE_COLORS.get(_hinge(name), "0.3")
-                lab = name if sw.steady == "periodic" else None
-                axes[0, c].plot(sw.mu, sw.growth_rate[:, t], color=color, label=lab, **style)
-                axes[1, c].plot(sw.mu, np.abs(sw.frequency[:, t]), color=color, **style)
+                hinge = _hinge(name)
+                color = HINGE_COLORS.get(hinge, "0.3")
+                marker = _HINGE_MARKERS.get(hinge, "o") if sw.steady == "periodic" else None
+                ax_g.plot(sw.mu, sw.growth_rate[:, t], color=color, marker=marker, label=name, **style)
+                ax_f.plot(sw.mu, np.abs(sw.frequency[:, t]), color=color, marker=marker, **style)
             miss = ~sw.found
             if miss.any():
-                for ax in axes[:, c]:
+                for ax in (ax_g, ax_f):
                     for m in sw.mu[miss]:
                         ax.axvspan(m - 0.0125, m + 0.0125, color="0.85", lw=0)
-        axes[0, c].axhline(0.0, color="k", lw=0.6)
-        axes[0, c].set_title(f"{case} C.G.", fontsize=9)
-        axes[0, c].set_ylabel("growth rate (1/rev)")
-        axes[1, c].set_ylabel(r"frequency $|\omega|$ (1/rev)")
-        axes[1, c].set_yscale("symlog", linthresh=1.0, linscale=0.6)
-        axes[1, c].set_ylim(-0.02, 6.0)
-        axes[1, c].set_yticks([0, 0.25, 0.5, 1, 2, 3, 4, 5])
-        axes[1, c].set_yticklabels(["0", "0.25", "0.5", "1", "2", "3", "4", "5"])
-        axes[1, c].set_xlabel(r"advance ratio $\mu$")
-        axes[0, c].legend(fontsize=6, ncol=2, loc="lower left")
+        ax_g.axhline(0.0, color="k", lw=0.8)
+        ax_g.set_title(f"({'abcdefgh'[2 * c]}) {case} C.G.: growth rates", fontsize=10)
+        ax_f.set_title(f"({'abcdefgh'[2 * c + 1]}) {case} C.G.: frequencies", fontsize=10)
+        ax_g.set_ylabel("growth rate (per rev)")
+        ax_f.set_ylabel(r"frequency $|\omega|$ (per rev)")
+        ax_f.set_yscale("symlog", linthresh=1.0, linscale=0.6)
+        ax_f.set_ylim(-0.02, 6.0)
+        ax_f.set_yticks([0, 0.25, 0.5, 1, 2, 3, 4, 5])
+        ax_f.set_yticklabels(["0", "0.25", "0.5", "1", "2", "3", "4", "5"])
+    for ax in axes[-1]:
+        ax.set_xlabel(r"advance ratio $\mu$")
+
+
+def floquet_legend_handles(data: FloquetData) -> list:
+    """Legend of :func:`plot_floquet`: the hinges (colour and marker), the two steady states
+    (line style), and the grey band where a periodic motion is missing."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    hinges = [h for h in HINGE_COLORS if any(_hinge(n) == h for sw in data.periodic for n in sw.names)]
+    out = [Line2D([], [], color=HINGE_COLORS[h], marker=_HINGE_MARKERS[h], ms=5, lw=1.3, label=f"{h} modes")
+           for h in hinges]
+    out += [Line2D([], [], color="k", marker="o", ms=4, lw=1.3, label="about the periodic motion"),
+            Line2D([], [], color="k", ls=":", lw=1.3, label="about the hover equilibrium")]
+    if any((~sw.found).any() for sw in data.periodic + data.hover):
+        out.append(Patch(color="0.85", label="no periodic motion found"))
+    return out
 
 
 def figure_floquet(data: FloquetData) -> Figure:
-    """The figure of :func:`plot_floquet` (two rows, one column per case, 14 x 7 in), laid
-    out and closed in pyplot.
+    """The figure of :func:`plot_floquet` (one row per case, growth rates left, frequencies
+    right, 8.6 in wide, 3 in per row, the legend below), laid out and closed in pyplot.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
-    fig, axes = subplots(2, len(data.cases), figsize=(14, 7.0), sharex=True, squeeze=False)
+    n = len(data.cases)
+    fig, axes = subplots(n, 2, figsize=(8.6, 3.0 * n + 0.6), sharex=True, squeeze=False)
     plot_floquet(data, axes)
-    return finish(fig)
+    handles = floquet_legend_handles(data)
+    ncol = (len(handles) + 1) // 2
+    handles = [h for pair in zip(handles[:ncol], handles[ncol:] + [None]) for h in pair if h is not None]
+    leg = fig.legend(handles=handles, loc="lower center", ncol=ncol, fontsize=8.5, frameon=False)
+    return finish(fig, rect=(0, _legend_height(fig, leg), 1, 1))
 
 
 # --------------------------------------------------------------------------------------
@@ -1096,58 +1146,88 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
                     lambda0=lam, A_used=aused, A_step3=astep3, weights=weights, messages=tuple(msgs), results=results)
 
 
+_SCAN_HATCHES = CATEGORY_HATCHES + SCAN_EXTRA_HATCHES
+
+#: Colour of the hatch lines of the verdict maps and their legend.
+_HATCH_COLOR = "0.2"
+_HATCH_LW = 0.6
+
+
 def plot_scan(data: ScanData, axes, *, rows=None) -> None:
-    """The verdicts in the (psi, mu) plane: one row per candidate, one column per case."""
+    """The verdicts in the (psi, mu) plane: one row per candidate, one column per case. Each
+    category has its colour and its hatch (:data:`rotorlyap.figures.style.CATEGORY_HATCHES`,
+    ``SCAN_EXTRA_HATCHES``), so that the map also reads without colour. The candidate's label
+    is the title of the row's middle panel; the figure names the columns (:func:`figure_scan`)."""
+    import matplotlib
     from matplotlib.colors import BoundaryNorm, ListedColormap
 
     cmap = ListedColormap(_SCAN_COLORS)
     norm = BoundaryNorm(np.arange(-0.5, len(_SCAN_COLORS) + 0.5), len(_SCAN_COLORS))
-    rows = range(len(data.keys)) if rows is None else rows
+    rows = list(range(len(data.keys)) if rows is None else rows)
     deg = np.degrees(data.psi)
     step = deg[1] - deg[0]
-    xe = np.concatenate([deg - step / 2, [deg[-1] + step / 2]])
+    # the azimuth is periodic: the cell about psi = 0 is drawn again past the last one, so that
+    # the map fills 0 to 360 deg
+    xe = np.concatenate([deg - step / 2, [deg[-1] + step / 2, deg[-1] + 3 * step / 2]])
     ye = _edges(data.mu_values, lo=0.0)
+    mid = len(data.cases) // 2
     for r, c in enumerate(rows):
         for i, case in enumerate(data.cases):
             ax = axes[r, i]
-            ax.pcolormesh(xe, ye, data.category[c, i], cmap=cmap, norm=norm, shading="flat",
-                          edgecolors="w", linewidth=0.2)
-            ax.axvline(180, color="k", lw=0.6, ls=":")
+            cat = data.category[c, i]
+            cat = np.concatenate([cat, cat[:, :1]], axis=1)
+            ax.pcolormesh(xe, ye, cat, cmap=cmap, norm=norm, shading="flat", edgecolors="face", linewidth=0.3)
+            with matplotlib.rc_context({"hatch.linewidth": _HATCH_LW, "hatch.color": _HATCH_COLOR}):
+                for k, hatch in enumerate(_SCAN_HATCHES):
+                    if hatch and (cat == k).any():
+                        ax.pcolor(xe, ye, np.ma.masked_where(cat != k, np.ones(cat.shape)), hatch=hatch,
+                                  facecolor="none", edgecolor=_HATCH_COLOR, linewidth=0.0)
+            ax.axvline(180, color="k", lw=0.8, ls=":")
             ax.set_xlim(0, 360)
             ax.set_ylim(0, ye[-1])
             ax.set_xticks(np.arange(0, 361, 90))
-            ax.tick_params(labelsize=7)
-            if r == 0:
-                ax.set_title(f"{case} C.G.", fontsize=9)
-            if r == len(list(rows)) - 1:
-                ax.set_xlabel(r"azimuth $\psi$ (deg)", fontsize=8)
+            ax.tick_params(labelsize=8.5)
+            if i == mid:
+                ax.set_title(f"({r + 1}) {data.labels[c]}", fontsize=9.5)
+            if r == len(rows) - 1:
+                ax.set_xlabel(r"azimuth $\psi$ (deg)", fontsize=9.5)
             if i == 0:
-                ax.set_ylabel(data.labels[c].replace(", ", ",\n", 2) + "\n" + r"$\mu$", fontsize=7)
+                ax.set_ylabel(r"advance ratio $\mu$", fontsize=9.5)
 
 
-def scan_legend_handles():
-    """Legend patches of the scan categories."""
+def scan_legend_handles(categories=None):
+    """Legend patches of the scan categories (colour and hatch), all of them or the indices
+    ``categories``."""
     from matplotlib.patches import Patch
 
-    return [Patch(facecolor=col, edgecolor="0.5", label=name)
-            for col, name in zip(_SCAN_COLORS, SCAN_CATEGORY_NAMES)]
+    keep = range(len(_SCAN_COLORS)) if categories is None else sorted(int(k) for k in categories)
+    return [Patch(facecolor=_SCAN_COLORS[k], edgecolor=_HATCH_COLOR, hatch=_SCAN_HATCHES[k],
+                  label=SCAN_CATEGORY_NAMES[k]) for k in keep]
 
 
 def figure_scan(data: ScanData) -> Figure:
-    """The figure of :func:`plot_scan` (one row per candidate, one column per case, 12 in
-    wide, 2 in per row) with the legend of the categories below, laid out and closed in
-    pyplot.
+    """The figure of :func:`plot_scan` (one row per candidate, one column per case, 8.8 in
+    wide, 1.7 in per row) with the legend of the categories present below, laid out and closed
+    in pyplot.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
+    import matplotlib
+
     nc = len(data.keys)
-    fig, axes = subplots(nc, len(data.cases), figsize=(12, 2.0 * nc + 1.2), sharex=True, sharey=True,
-                             squeeze=False)
+    fig, axes = subplots(nc, len(data.cases), figsize=(8.8, 1.7 * nc + 1.6), sharex=True, sharey=True,
+                         squeeze=False)
     plot_scan(data, axes)
-    fig.legend(handles=scan_legend_handles(), loc="lower center", ncol=3, fontsize=7)
-    return finish(fig, rect=(0, 0.04, 1, 1))
+    for i, case in enumerate(data.cases):  # the columns, above the first row's title
+        axes[0, i].annotate(f"{case} C.G.", xy=(0.5, 1.0), xycoords="axes fraction", xytext=(0, 22),
+                            textcoords="offset points", ha="center", va="bottom", fontsize=10.5,
+                            fontweight="bold")
+    with matplotlib.rc_context({"hatch.linewidth": _HATCH_LW}):
+        leg = fig.legend(handles=scan_legend_handles(np.unique(data.category)), loc="lower center", ncol=2,
+                         fontsize=8.5, frameon=False, handlelength=2.4, handleheight=1.5)
+    return finish(fig, rect=(0, _legend_height(fig, leg), 1, 1))
 
 
 @dataclass(frozen=True)
@@ -1454,42 +1534,48 @@ def confusion_rows(validations, labels: dict | None = None) -> list:
     return rows
 
 
-def plot_validation(validations, axes, *, certified=("quadratic-opt", "quadratic")) -> None:
-    """Largest norm reached against the start norm, one panel per validation; colours:
-    certified by both functions of ``certified``, by the first only, by the second only, not
-    certified (stayed within ``A`` or not); lines: ``A`` and each function's certified bound.
-    Motions that reached ``A`` were stopped there."""
+def plot_validation(validations, axes, *, certified=("quadratic-opt", "quadratic"), legend_ax=None) -> None:
+    """Largest norm reached against the start norm, one panel per validation; colours (and
+    markers): certified by both functions of ``certified``, by the first only, by the second
+    only, not certified (stayed within ``A`` or not); lines: ``A`` and each function's
+    certified bound. Motions that reached ``A`` were stopped there. The legend (on
+    ``legend_ax``, default the first panel) names every group drawn in any panel."""
     def groups(v):
         c1 = v.covered[v.names.index(certified[0])] if certified[0] in v.names else np.zeros(v.n, bool)
         c2 = v.covered[v.names.index(certified[1])] if certified[1] in v.names else np.zeros(v.n, bool)
-        return [(c1 & c2, "tab:green", "certified by both quadratic functions"),
-                (c1 & ~c2, "yellowgreen", "certified by the optimised one only"),
-                (~c1 & c2, "darkgoldenrod", "certified by Q = I only"),
-                (~c1 & ~c2 & v.bounded, "tab:blue", "not certified, stayed within A"),
-                (~c1 & ~c2 & ~v.bounded, "tab:red", "not certified, reached A")]
+        return [(c1 & c2, "tab:green", "o", "certified by both quadratic functions"),
+                (c1 & ~c2, "yellowgreen", "D", "certified by the optimised one only"),
+                (~c1 & c2, "darkgoldenrod", "s", "certified by Q = I only"),
+                (~c1 & ~c2 & v.bounded, "tab:blue", "v", "not certified, stayed within A"),
+                (~c1 & ~c2 & ~v.bounded, "tab:red", "x", "not certified, reached A")]
 
-    # the legend (first panel) names every group drawn in any panel
-    present = np.any([[m.any() for m, _, _ in groups(v)] for v in validations], axis=0)
+    axes = list(np.asarray(axes).ravel())
+    present = np.any([[g[0].any() for g in groups(v)] for v in validations], axis=0)
     for ax, v in zip(axes, validations):
         jitter = 1.0 + 0.03 * np.sin(np.arange(v.n) * 2.39996)
-        for k, (mask, col, lab) in enumerate(groups(v)):
+        for k, (mask, col, marker, lab) in enumerate(groups(v)):
             if mask.any() or (ax is axes[0] and present[k]):
-                ax.scatter(v.radius[mask] * jitter[mask], v.max_norm[mask], s=6, color=col, label=lab, alpha=0.7)
+                ax.scatter(v.radius[mask] * jitter[mask], v.max_norm[mask], s=24, color=col, marker=marker,
+                           label=lab, alpha=0.75, linewidths=1.0 if marker == "x" else 0.0)
         ax.axhline(v.A, color="k", lw=1.2, label="$A$")
         for name, ls in zip(certified, ("--", ":")):
             if name in v.names:
                 k = v.names.index(name)
-                ax.axhline(v.A_used[k], color="tab:green", lw=1.0, ls=ls,
+                ax.axhline(v.A_used[k], color="tab:green", lw=1.4, ls=ls,
                            label=f"certified $A$, {'optimised' if name.endswith('opt') else 'Q = I'}")
-        ax.plot([1e-3, 2], [1e-3, 2], color="0.6", lw=0.6)
+        ax.plot([1e-3, 2], [1e-3, 2], color="0.6", lw=0.8)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlim(0.01, 1.3)
         ax.set_ylim(0.01, 1.5)
         ax.set_xlabel(r"start norm $\|x_0\|$")
-        ax.set_title(v.label, fontsize=9)
+        ax.set_title(v.label.replace("mu = ", r"$\mu$ = "), fontsize=10)
     axes[0].set_ylabel(r"largest norm reached, $\max_\psi \|x\|$")
-    axes[0].legend(fontsize=7, loc="upper left")
+    handles, labels = axes[0].get_legend_handles_labels()
+    if legend_ax is None:
+        axes[0].legend(fontsize=8.5, loc="upper left")
+    else:
+        legend_ax.legend(handles, labels, fontsize=9, loc="center")
 
 
 #: Header of the confusion table (:meth:`ValidationData.confusion_table`).
@@ -1621,14 +1707,25 @@ def validation_set(scan: ScanData, motions: SteadyMotions, *, forward_mu: tuple 
 
 def figure_validation(data: ValidationData) -> Figure:
     """The figure of :func:`plot_validation` for the forward-C.G. validations (one panel
-    each, 14 x 4.3 in), laid out and closed in pyplot.
+    each, two to a row, 8.6 in wide, 3.6 in per row; with an odd number of panels the legend
+    fills the last cell), laid out and closed in pyplot.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
-    fig, axes = subplots(1, len(data.forward), figsize=(14, 4.3), sharey=True, squeeze=False)
-    plot_validation(data.forward, axes[0])
+    n = len(data.forward)
+    ncol = min(n, 2)
+    nrow = -(-n // ncol)
+    fig, axes = subplots(nrow, ncol, figsize=(4.3 * ncol, 3.6 * nrow), squeeze=False)
+    axes = axes.ravel()
+    spare = axes[n] if n < axes.size else None
+    plot_validation(data.forward, axes[:n], legend_ax=spare)
+    if spare is not None:
+        spare.set_axis_off()
+    for k, ax in enumerate(axes[:n]):
+        if k % ncol == 0:
+            ax.set_ylabel(r"largest norm reached, $\max_\psi \|x\|$")
     return finish(fig)
 
 
@@ -1769,55 +1866,78 @@ def motion_data(*, flutter_periods: int = 15, drift_mu: float = 0.05, drift_peri
 
 
 def plot_motions(data: MotionData, axes) -> None:
-    """(a) Peak norm per revolution, every motion (log scale); (b) the pitch and lag angles
-    over the last two revolutions of the first two experiments; (c) the norm of the forward-flight
-    motion about the hover equilibrium against the periodic motion seen from there."""
+    """(a) Peak norm per revolution, every motion (log scale; colour per experiment, line style
+    per start); (b) the pitch (solid) and lag (dashed) angles over the last two revolutions of
+    the first two experiments (dotted: the hover equilibrium); (c) the norm of the
+    forward-flight motion about the hover equilibrium against the periodic motion seen from
+    there."""
+    from matplotlib.lines import Line2D
+    from matplotlib.ticker import MaxNLocator
+
     ax = axes[0]
-    colors = ("tab:purple", "tab:red", "tab:blue")
+    colors = ("#CC79A7", "#D55E00", "#0072B2")
+    starts = ("-", "--")
     for h, col in zip(data.histories, colors):
-        for m, ls in zip(range(h.peaks.shape[1]), ("-", "--")):
-            ax.plot(np.arange(1, h.peaks.shape[0] + 1), h.peaks[:, m], ls, color=col, lw=1.2,
-                    label=f"{h.label}: {data.start_labels[0][m]}")
-    ax.axhline(DEFAULT_A, color="tab:green", lw=1.5, label="$A$")
+        for m, ls in zip(range(h.peaks.shape[1]), starts):
+            ax.plot(np.arange(1, h.peaks.shape[0] + 1), h.peaks[:, m], ls, color=col, lw=1.4)
+    ax.axhline(DEFAULT_A, color="k", lw=1.0, ls="-.")
     ax.set_yscale("log")
+    peaks = np.concatenate([h.peaks.ravel() for h in data.histories] + [[DEFAULT_A]])
+    lo, hi = np.log10(peaks.min()), np.log10(peaks.max())
+    ax.set_ylim(10 ** (lo - 0.6 * (hi - lo)), 10 ** (hi + 0.1 * (hi - lo)))  # room for the legend below
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax.set_xlabel("revolution")
     ax.set_ylabel(r"peak $\|x\|$ in the revolution")
-    ax.legend(fontsize=6)
+    ax.set_title("(a) largest norm in each revolution", fontsize=10)
+    handles = [Line2D([], [], color=col, lw=2.0, label=h.label.replace("mu = ", r"$\mu$ = ")) for h, col in zip(data.histories, colors)]
+    handles += [Line2D([], [], color="0.3", ls=ls, lw=1.4, label=f"start {lab}")
+                for lab, ls in zip(data.start_labels[0], starts)]
+    handles.append(Line2D([], [], color="k", lw=1.0, ls="-.", label="$A$"))
+    ax.legend(handles=handles, fontsize=8.5, ncol=2, loc="lower right")
     ax = axes[1]
     for h, off, col in zip(data.histories[:2], data.offsets[:2], colors):
         k = 2 * points_per_revolution(h) + 1
         az = np.degrees(h.psi[-k:] - h.psi[-k])
-        for i, name, ls in ((2, r"pitch $\theta$", "-"), (1, r"lag $\zeta$", "--")):
-            ax.plot(az, np.degrees(off[-k:, i] + h.x[-k:, 0, i]), ls, color=col, lw=1.2,
-                    label=f"{h.label}: {name}")
-            ax.axhline(np.degrees(off[0, i]), color=col, lw=0.6, ls=":")
-    ax.set_xlabel(r"azimuth over the last two revolutions (deg)")
-    ax.set_ylabel("hinge angle (deg; dotted: hover equilibrium)")
-    ax.legend(fontsize=6)
+        for i, ls in ((2, "-"), (1, "--")):
+            ax.plot(az, np.degrees(off[-k:, i] + h.x[-k:, 0, i]), ls, color=col, lw=1.4)
+            ax.axhline(np.degrees(off[0, i]), color=col, lw=0.9, ls=":")
+    ax.set_xlim(0, 720)
+    ax.set_xticks(np.arange(0, 721, 180))
+    lo, hi = ax.dataLim.y0, ax.dataLim.y1
+    ax.set_ylim(lo - 0.22 * (hi - lo), hi + 0.05 * (hi - lo))  # room for the legend below
+    ax.set_xlabel("azimuth over the last two revolutions (deg)")
+    ax.set_ylabel("hinge angle (deg)")
+    ax.set_title("(b) the first two experiments", fontsize=10)
+    ax.legend(handles=[Line2D([], [], color="0.3", ls="-", lw=1.4, label=r"pitch $\theta$"),
+                       Line2D([], [], color="0.3", ls="--", lw=1.4, label=r"lag $\zeta$"),
+                       Line2D([], [], color="0.3", ls=":", lw=0.9, label="hover equilibrium")],
+              fontsize=8.5, ncol=3, loc="lower center", columnspacing=1.2)
     ax = axes[2]
     h, ref = data.histories[2], data.reference[2]
-    for m, ls in zip(range(h.norm.shape[1]), ("-", "--")):
-        ax.plot(h.psi / (2 * np.pi), h.norm[:, m], ls, color="tab:blue", lw=0.8,
-                label=f"motion from {data.start_labels[2][m]}")
-    ax.plot(h.psi / (2 * np.pi), ref, color="k", lw=1.0, alpha=0.7,
-            label=r"$\|\xi(\psi) - \xi_{\mathrm{hover}}\|$ (periodic motion)")
-    ax.axhline(DEFAULT_A, color="tab:green", lw=1.5, label="$A$")
+    for m, ls in zip(range(h.norm.shape[1]), starts):
+        ax.plot(h.psi / (2 * np.pi), h.norm[:, m], ls, color=colors[2], lw=1.0,
+                label=f"start {data.start_labels[2][m]}")
+    ax.plot(h.psi / (2 * np.pi), ref, color="k", lw=1.2, alpha=0.7,
+            label=r"$\|\xi(\psi) - \xi_{\mathrm{hover}}\|$, periodic motion")
+    ax.axhline(DEFAULT_A, color="k", lw=1.0, ls="-.", label="$A$")
     ax.set_xlabel("revolutions")
     ax.set_ylabel(r"$\|x\|$ about the hover equilibrium")
-    ax.set_title(h.label, fontsize=8)
-    ax.legend(fontsize=6)
+    ax.set_title("(c) " + h.label.replace(", about", ",\nabout").replace("mu = ", r"$\mu$ = "), fontsize=10)
+    ax.set_ylim(0.0, 1.5 * max(np.nanmax(h.norm), np.nanmax(ref), DEFAULT_A))  # room for the legend above
+    ax.legend(fontsize=8.5, loc="upper right")
 
 
 def figure_motions(data: MotionData) -> Figure:
-    """The figure of :func:`plot_motions` (three panels, 15 x 4.3 in), laid out and closed in
-    pyplot.
+    """The figure of :func:`plot_motions` ((a) across the top, (b) and (c) below it; 8.6 x
+    7.6 in), laid out and closed in pyplot.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
-    fig, axes = subplots(1, 3, figsize=(15, 4.3))
-    plot_motions(data, axes)
+    fig = figure(figsize=(8.6, 7.6))
+    ax = fig.subplot_mosaic([["a", "a"], ["b", "c"]])
+    plot_motions(data, [ax["a"], ax["b"], ax["c"]])
     return finish(fig)
 
 
@@ -1954,7 +2074,7 @@ class FarMotion:
             "ch7_far_lag": round(float(self.mean_lag_deg), 1),
             "ch7_far_lag_hover": round(float(self.hover_lag_deg), 1),
             "ch7_far_res": format_small(self.residual),
-            "ch7_far_rho": round(float(self.spectral_radius), 3),
+            "ch7_far_rho": Rounded(self.spectral_radius, 3),
             "ch7_far_dist": round(float(self.distance_hover), 1),
             "ch7_far_peak": round(float(self.peak), 1),
         }
@@ -2003,7 +2123,7 @@ class OriginData:
 
     @property
     def relative_rate(self) -> np.ndarray:
-        """``max W' / max W`` (per rad): scale-free, comparable between functions."""
+        """``max W' / max W`` (per rev): scale-free, comparable between functions."""
         return self.max_dW / self.max_W
 
     def export(self) -> dict:
@@ -2025,7 +2145,7 @@ class OriginData:
         return "\n".join(lines)
 
     def facts(self) -> dict:
-        """``max W' / max W`` on the smallest sphere (per rad, three decimals) of the energy
+        """``max W' / max W`` on the smallest sphere (per rev, three decimals) of the energy
         (row 0) and of the quadratic function with ``Q = I`` (row 1) in hover; the radii between
         which the latter turns positive (two decimals); the range of radii where the last
         function (the quadratic one about the periodic motion) is negative (one digit). The
@@ -2067,25 +2187,33 @@ def origin_data(functions: dict, radii=None, *, n_psi: int = 12, n_sphere: int =
 
 def plot_origin(data: OriginData, ax) -> None:
     """``max W' / max W`` on spheres against their radius (symmetric-log scale: negative
-    values mean ``W' < 0`` on the whole sphere)."""
+    values mean ``W' < 0`` on the whole sphere); colour, marker and line style per function."""
     styles = ("-", "-", "-", "--", "--", ":")
+    markers = ("o", "s", "D", "^", "v", "P")
     for i, lab in enumerate(data.labels):
-        ax.plot(data.radii, data.relative_rate[i], styles[i % len(styles)], marker="o", ms=3, label=lab)
+        ax.plot(data.radii, data.relative_rate[i], styles[i % len(styles)], marker=markers[i % len(markers)],
+                ms=4.5, lw=1.3, label=lab)
     ax.axhline(0.0, color="k", lw=0.8)
     ax.set_xscale("log")
     ax.set_yscale("symlog", linthresh=0.01)
-    ax.set_xlabel(r"sphere radius $r = \|x\|$")
-    ax.set_ylabel(r"$\max W' \,/\, \max W$ on the sphere (1/rad)")
-    ax.legend(fontsize=7)
+    ax.set_xlabel(r"sphere radius $r = \|x\|$ (norm units)")
+    ax.set_ylabel(r"$\max W' \,/\, \max W$ on the sphere (per rev)")
+    rate = data.relative_rate[np.isfinite(data.relative_rate)]
+    if rate.size:
+        ax.set_ylim(min(3 * rate.min(), -0.03), max(3 * rate.max(), 0.03))
+    ax.legend(fontsize=8.5)
 
 
 def figure_origin(data: OriginData) -> Figure:
-    """The figure of :func:`plot_origin` (8.5 x 4.6 in), laid out and closed in pyplot.
+    """The figure of :func:`plot_origin` (8 x 5.2 in, the legend below the panel), laid out
+    and closed in pyplot.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
-    fig, ax = subplots(figsize=(8.5, 4.6))
+    fig, ax = subplots(figsize=(8.0, 5.2))
     plot_origin(data, ax)
-    return finish(fig)
+    ax.get_legend().remove()
+    leg = fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, fontsize=8.5, frameon=False)
+    return finish(fig, rect=(0, _legend_height(fig, leg), 1, 1))

@@ -504,18 +504,18 @@ def plot_harmonics(data: HarmonicData):
     Returns
     -------
     matplotlib.figure.Figure
-        A new figure, 11 x 3.2 in, already closed in pyplot (so a notebook shows it only
+        A new figure, 9 x 3.2 in, already closed in pyplot (so a notebook shows it only
         where it is glued or saved).
     """
-    fig, axes = subplots(1, 3, figsize=(11, 3.2), sharex=True)
+    fig, axes = subplots(1, 3, figsize=(9.0, 3.2), sharex=True)
     for k, (ax, hinge) in enumerate(zip(axes, HINGES)):
         for j, (label, style) in enumerate(_COMPONENT_LEGEND):
-            ax.plot(data.mu, data.harmonics_deg[:, k, j], style, marker="o", ms=3, label=label)
-        ax.set_title(f"{hinge} angle")
+            ax.plot(data.mu, data.harmonics_deg[:, k, j], style, marker="os^"[j], ms=4, label=label)
+        ax.set_title(f"{hinge} angle", fontsize=10)
         ax.set_xlabel(r"advance ratio $\mu$")
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("harmonic (deg)")
-    axes[0].legend(fontsize=8)
+    axes[0].legend(fontsize=8.5)
     return finish(fig)
 
 
@@ -632,7 +632,7 @@ class CertificateTable:
                          f"{c.growth_rate:.3f}"))
         return markdown_table(("mu", "verdict", "start: flap (deg)", "start: lag (deg)", "start: pitch (deg)",
                                "bound: flap (deg)", "bound: lag (deg)", "bound: pitch (deg)",
-                               "largest Floquet real part (per rad)"), rows)
+                               "largest Floquet real part (per rev)"), rows)
 
     def summary(self) -> str:
         """Each certificate's own three-line summary."""
@@ -683,7 +683,8 @@ class SweepFigureData:
     series : tuple
         The values of ``series_name``, one per line.
     growth : numpy.ndarray
-        Largest real part of the Floquet exponents, per rad, shape (len(series), n).
+        Largest real part of the Floquet exponents, per rev (per radian of azimuth), shape
+        (len(series), n).
     start_flap_deg : numpy.ndarray
         Start region along the flap angle, deg (0 where nothing is certified), same shape.
     certified : numpy.ndarray of bool
@@ -703,7 +704,7 @@ class SweepFigureData:
         rate, start region and verdict."""
         out = {self.x_name: self.x}
         for k, s in enumerate(self.series):
-            out[f"growth_per_rad_{self.series_name}_{s:g}"] = self.growth[k]
+            out[f"growth_per_rev_{self.series_name}_{s:g}"] = self.growth[k]
             out[f"start_flap_deg_{self.series_name}_{s:g}"] = self.start_flap_deg[k]
             out[f"certified_{self.series_name}_{s:g}"] = self.certified[k].astype(int)
         return out
@@ -714,7 +715,7 @@ class SweepFigureData:
         lines = [f"{self.x_name}: {[float(v) for v in self.x]}"]
         for k, s in enumerate(self.series):
             lines.append(f"{self.series_name} = {s:g}: certified at {[float(v) for v in self.x[self.certified[k]]]}")
-            lines.append(f"  growth per rad: {np.round(self.growth[k], 3).tolist()}")
+            lines.append(f"  growth per rev: {np.round(self.growth[k], 3).tolist()}")
             lines.append(f"  flap start (deg): {np.round(self.start_flap_deg[k], 2).tolist()}")
         return "\n".join(lines)
 
@@ -747,7 +748,7 @@ def sweep_figure_data(result, x_name: str, series_name: str) -> SweepFigureData:
     shape = (len(series), x.size)
     growth, start, ok = np.full(shape, np.nan), np.zeros(shape), np.zeros(shape, dtype=bool)
     seen = np.zeros(shape, dtype=bool)
-    for xv, sv, g, st, c in zip(xs, ss, result.column("growth_rate_per_rad"), result.column("start_flap_deg"),
+    for xv, sv, g, st, c in zip(xs, ss, result.column("growth_rate_per_rev"), result.column("start_flap_deg"),
                                 result.column("certified")):
         i, j = series.index(sv), int(np.searchsorted(x, xv))
         seen[i, j] = True
@@ -761,7 +762,7 @@ def sweep_figure_data(result, x_name: str, series_name: str) -> SweepFigureData:
 
 
 def plot_sweep(data: SweepFigureData, *, x_label: str, series_label: str):
-    """Two panels against the swept parameter: (a) the largest Floquet real part (per rad; above 0
+    """Two panels against the swept parameter: (a) the largest Floquet real part (per rev; above 0
     the linearised blade is unstable and nothing can be certified), (b) the certified start region
     along the flap angle (deg); filled markers certified, crosses not. One line per series value,
     told apart by colour, marker and line style.
@@ -782,7 +783,7 @@ def plot_sweep(data: SweepFigureData, *, x_label: str, series_label: str):
         ax2.plot(data.x[ok], data.start_flap_deg[k][ok], marker, color=colour, ms=5, ls="none")
         ax2.plot(data.x[~ok], data.start_flap_deg[k][~ok], "x", color=colour, ms=6, ls="none", clip_on=False)
     ax1.axhline(0.0, color="k", lw=0.8)
-    ax1.set_ylabel("largest Floquet real part (per rad)")
+    ax1.set_ylabel("largest Floquet real part (per rev)")
     ax1.set_title("(a) linear stability", fontsize=10)
     ax2.set_ylabel("certified flap start region (deg)")
     ax2.set_title("(b) the certificate (x: none)", fontsize=10)
