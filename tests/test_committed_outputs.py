@@ -201,3 +201,14 @@ def test_printed_arrays_are_not_shown_as_prose(path):
         if found:
             shown.append(f"cell {k}: {found[0][:50]}")
     assert not shown, f"{path.name}: printed arrays shown on the page (tag the cells hide-output): {shown}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+def test_markdown_outputs_are_rendered_as_myst(path):
+    """A cell that displays Markdown (a table, math) carries ``mystnb.markdown_format: myst``:
+    myst-nb's default renders outputs as plain CommonMark, which shows a table as raw pipes."""
+    nb = json.loads(path.read_text(encoding="utf-8"))
+    plain = [k for k, c in enumerate(nb["cells"]) if c["cell_type"] == "code"
+             and any("text/markdown" in o.get("data", {}) for o in c.get("outputs", []))
+             and c.get("metadata", {}).get("mystnb", {}).get("markdown_format") != "myst"]
+    assert not plain, f"{path.name}: cells {plain} display Markdown without mystnb.markdown_format = myst"

@@ -41,7 +41,8 @@ What is checked, page by page
   wider than the column or hides part of itself behind a scroll bar, at the 1280 px window
   the screenshots are taken at;
 * no placeholder is left in the text ("to come", "TODO", "FIXME", "TBD", "XXX");
-* figure text: every figure of the column is a PNG saved at the resolution the figures' rule
+* figure text: every figure of the column (an image in a figure or a cell's output; not the
+  theme's icons) is a PNG saved at the resolution the figures' rule
   assumes (``rotorlyap.figures.style.BOOK_DPI``, read from its ``pHYs`` chunk) and is shown at
   least as wide as the rule assumes (its natural width, or the 672 px column if wider), so that
   its smallest text, which ``rotorlyap.figures.style.finish`` checked when the figure was made,
@@ -208,7 +209,7 @@ COLLECT = r"""
     images: [...document.images].map(i => ({src: i.getAttribute('src'), complete: i.complete,
                                             width: i.naturalWidth, height: i.naturalHeight,
                                             shown: i.getBoundingClientRect().width,
-                                            inColumn: column.contains(i) && i.checkVisibility()})),
+                                            inFigure: column.contains(i) && i.checkVisibility() && !!i.closest('figure, div.figure, .cell_output')})),
     links,
     ids: [...document.querySelectorAll('[id]')].map(e => e.id)
         .concat([...document.querySelectorAll('a[name]')].map(e => e.getAttribute('name'))),
@@ -472,7 +473,7 @@ def test_figure_text_is_legible_at_the_displayed_width(shown, page):
     here = Path(unquote(urlsplit(shown.info["href"]).path))
     small = []
     for img in shown.info["images"]:
-        if not img["inColumn"] or not img["width"]:
+        if not img["inFigure"] or not img["width"]:
             continue
         target = (here.parent / unquote(urlsplit(img["src"]).path)).resolve()
         if target.suffix.lower() != ".png":
