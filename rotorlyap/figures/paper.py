@@ -39,8 +39,8 @@ from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.trim import hover_trim
 from ..reporting import decade_above
 from .export import markdown_table  # the claims table; also re-exported for the chapters
-from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HINGE_COLORS, HINGE_LINESTYLES,
-                    figure, finish, subplots)
+from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HATCH_COLOR, HATCH_LINEWIDTH,
+                    HINGE_COLORS, HINGE_LINESTYLES, draw_categories, figure, finish, subplots)
 
 __all__ = [
     "READING_LABELS", "CASES", "MU_GRID", "MU_GRID_STRICT", "STATE_LABELS",
@@ -190,8 +190,6 @@ def _line(*parts) -> str:
 #: (:data:`rotorlyap.figures.style.CATEGORY_HATCHES`).
 REVERSE_FLOW_HATCH = "||"
 
-_HATCH_COLOR = "0.15"
-_HATCH_LINEWIDTH = 0.6
 
 
 def category_legend_handles(reverse_flow_label: str = "reverse flow reaches the blade root", *,
@@ -206,8 +204,8 @@ def category_legend_handles(reverse_flow_label: str = "reverse flow reaches the 
     def lab(text):
         return text if wrap is None else "\n".join(textwrap.wrap(text, wrap))
 
-    handles = [Patch(facecolor=c, hatch=h, edgecolor="0.3", hatchcolor=_HATCH_COLOR, lw=0.6, label=lab(n),
-                     hatch_linewidth=_HATCH_LINEWIDTH)
+    handles = [Patch(facecolor=c, hatch=h, edgecolor="0.3", hatchcolor=HATCH_COLOR, lw=0.6, label=lab(n),
+                     hatch_linewidth=HATCH_LINEWIDTH)
                for c, h, n in zip(CATEGORY_COLORS, CATEGORY_HATCHES, CATEGORY_NAMES)]
     handles.append(Patch(facecolor="none", edgecolor="k", hatch=REVERSE_FLOW_HATCH, hatchcolor="k", lw=1.5,
                          label=lab(reverse_flow_label)))
@@ -1692,37 +1690,6 @@ def _edges(values: np.ndarray, lo: float | None = None, hi: float | None = None)
     return np.concatenate([[first], mid, [last]])
 
 
-def _category_cmap():
-    from matplotlib.colors import BoundaryNorm, ListedColormap
-
-    return ListedColormap(CATEGORY_COLORS), BoundaryNorm(np.arange(-0.5, 4.5), 4)
-
-
-def _draw_categories(ax, x_edges, y_edges, category) -> None:
-    """The verdict map: each cell in its category's colour (:data:`CATEGORY_COLORS`) and hatch
-    (:data:`CATEGORY_HATCHES`), the second cue that keeps the map readable in grey print. The
-    hatches are drawn cell by cell (straight edges, as ``pcolormesh`` draws the cells, in polar
-    axes too), so they follow the cells exactly."""
-    from matplotlib.collections import PolyCollection
-
-    cmap, norm = _category_cmap()
-    ax.pcolormesh(x_edges, y_edges, category, cmap=cmap, norm=norm, shading="flat")
-    cat = np.asarray(category)
-    for k, hatch in enumerate(CATEGORY_HATCHES):
-        if not hatch:
-            continue
-        rows, cols = np.nonzero(cat == k)
-        if rows.size == 0:
-            continue
-        x0, x1 = x_edges[cols], x_edges[cols + 1]
-        y0, y1 = y_edges[rows], y_edges[rows + 1]
-        verts = np.stack([np.column_stack(v) for v in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))], axis=1)
-        cells = PolyCollection(verts, facecolors="none", edgecolors="none", linewidths=0.0, hatch=hatch,
-                               hatchcolor=_HATCH_COLOR)
-        cells.set_hatch_linewidth(_HATCH_LINEWIDTH)
-        ax.add_collection(cells, autolim=False)
-
-
 def _reverse_flow(ax, th, rb, top) -> None:
     """Hatch (:data:`REVERSE_FLOW_HATCH`) and outline the region ``rb <= r <= top`` over the
     azimuths ``th`` where ``rb <= top``: where reverse flow reaches the blade root."""
@@ -1762,7 +1729,7 @@ def plot_regions_polar(data: RegionsData, ax, case_index: int = 0, *, title: str
         # below r = 0 (the radial axis starts at -hole), so that radius = mu stays exact.
         hole = 0.12 * r_edges[-1]
         r_edges = np.concatenate([[-hole], r_edges[1:]])
-    _draw_categories(ax, th_edges, r_edges, data.category[case_index])
+    draw_categories(ax, th_edges, r_edges, data.category[case_index], CATEGORY_COLORS, CATEGORY_HATCHES)
     th = np.linspace(np.pi, 2 * np.pi, 361)
     rb = data.root_r_over_R / np.maximum(-np.sin(th), 1e-9)
     rmax = r_edges[-1]
@@ -1796,8 +1763,8 @@ def plot_regions_plane(data: RegionsData, ax, case_index: int = 0, *, title: str
     deg = np.degrees(data.psi)
     step = deg[1] - deg[0]
     top = _edges(data.mu_values, lo=0.0)[-1]
-    _draw_categories(ax, np.concatenate([deg - step / 2, [deg[-1] + step / 2]]), _edges(data.mu_values, lo=0.0),
-                     data.category[case_index])
+    draw_categories(ax, np.concatenate([deg - step / 2, [deg[-1] + step / 2]]), _edges(data.mu_values, lo=0.0),
+                     data.category[case_index], CATEGORY_COLORS, CATEGORY_HATCHES)
     th = np.linspace(180, 360, 361)
     rb = data.root_r_over_R / np.maximum(-np.sin(np.radians(th)), 1e-9)
     _reverse_flow(ax, th, rb, top)

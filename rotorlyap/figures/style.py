@@ -23,7 +23,8 @@ import numpy as np
 __all__ = [
     "BOOK_DPI", "CATEGORY_COLORS", "CATEGORY_HATCHES", "CG_COLORS", "CG_MARKERS", "CG_ROMAN",
     "HINGE_COLORS", "HINGE_LINESTYLES", "MIN_FONT_PT", "MIN_TEXT_PX", "PAGE_WIDTH_PX",
-    "SCAN_EXTRA_COLORS", "SCAN_EXTRA_HATCHES", "FigureLayoutError", "check_legible", "figure",
+    "SCAN_EXTRA_COLORS", "SCAN_EXTRA_HATCHES", "HATCH_COLOR", "HATCH_LINEWIDTH", "FigureLayoutError",
+    "check_legible", "draw_categories", "figure",
     "finish", "max_width_in", "shown_text_px", "subplots",
 ]
 
@@ -60,6 +61,38 @@ and no periodic motion found."""
 
 SCAN_EXTRA_HATCHES = ("\\\\", "--")
 """Hatch pattern of each category of :data:`SCAN_EXTRA_COLORS`."""
+
+HATCH_COLOR = "0.15"
+"""Colour of the hatch lines of the verdict maps and their legends."""
+
+HATCH_LINEWIDTH = 0.6
+"""Width of the hatch lines, points."""
+
+
+def draw_categories(ax, x_edges, y_edges, category, colors, hatches) -> None:
+    """A verdict map: each cell of ``category`` (integers, shape (len(y_edges) - 1,
+    len(x_edges) - 1)) in the colour ``colors[k]`` and the hatch ``hatches[k]`` of its category
+    ``k``, the hatch drawn cell by cell (straight edges, as ``pcolormesh`` draws the cells, in
+    polar axes too) so that it follows the cells exactly."""
+    from matplotlib.collections import PolyCollection
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    n = len(colors)
+    ax.pcolormesh(x_edges, y_edges, category, cmap=ListedColormap(colors),
+                  norm=BoundaryNorm(np.arange(-0.5, n + 0.5), n), shading="flat")
+    x_edges, y_edges, cat = np.asarray(x_edges), np.asarray(y_edges), np.asarray(category)
+    for k, hatch in enumerate(hatches):
+        rows, cols = np.nonzero(cat == k)
+        if not hatch or rows.size == 0:
+            continue
+        x0, x1 = x_edges[cols], x_edges[cols + 1]
+        y0, y1 = y_edges[rows], y_edges[rows + 1]
+        verts = np.stack([np.column_stack(v) for v in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))], axis=1)
+        cells = PolyCollection(verts, facecolors="none", edgecolors="none", linewidths=0.0, hatch=hatch,
+                               hatchcolor=HATCH_COLOR)
+        cells.set_hatch_linewidth(HATCH_LINEWIDTH)
+        ax.add_collection(cells, autolim=False)
+
 
 PAGE_WIDTH_PX = 672
 """Width of the book's text column, CSS pixels, at a 1280 px browser window (measured by the

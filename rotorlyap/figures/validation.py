@@ -53,8 +53,9 @@ from ..model.parameters import BladeParameters
 from ..model.steady import disturbed_rhs, periodic_motion, tabulate_motion
 from ..reporting import Rounded, decade_above, format_small, format_small_array
 from .export import markdown_table
-from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HINGE_COLORS,
-                    SCAN_EXTRA_COLORS, SCAN_EXTRA_HATCHES, figure, finish, subplots)
+from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HATCH_COLOR, HATCH_LINEWIDTH,
+                    HINGE_COLORS, SCAN_EXTRA_COLORS, SCAN_EXTRA_HATCHES, draw_categories, figure, finish,
+                    subplots)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -1148,9 +1149,6 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
 
 _SCAN_HATCHES = CATEGORY_HATCHES + SCAN_EXTRA_HATCHES
 
-#: Colour of the hatch lines of the verdict maps and their legend.
-_HATCH_COLOR = "0.2"
-_HATCH_LW = 0.6
 
 
 def plot_scan(data: ScanData, axes, *, rows=None) -> None:
@@ -1158,11 +1156,6 @@ def plot_scan(data: ScanData, axes, *, rows=None) -> None:
     category has its colour and its hatch (:data:`rotorlyap.figures.style.CATEGORY_HATCHES`,
     ``SCAN_EXTRA_HATCHES``), so that the map also reads without colour. The candidate's label
     is the title of the row's middle panel; the figure names the columns (:func:`figure_scan`)."""
-    import matplotlib
-    from matplotlib.colors import BoundaryNorm, ListedColormap
-
-    cmap = ListedColormap(_SCAN_COLORS)
-    norm = BoundaryNorm(np.arange(-0.5, len(_SCAN_COLORS) + 0.5), len(_SCAN_COLORS))
     rows = list(range(len(data.keys)) if rows is None else rows)
     deg = np.degrees(data.psi)
     step = deg[1] - deg[0]
@@ -1176,12 +1169,7 @@ def plot_scan(data: ScanData, axes, *, rows=None) -> None:
             ax = axes[r, i]
             cat = data.category[c, i]
             cat = np.concatenate([cat, cat[:, :1]], axis=1)
-            ax.pcolormesh(xe, ye, cat, cmap=cmap, norm=norm, shading="flat", edgecolors="face", linewidth=0.3)
-            with matplotlib.rc_context({"hatch.linewidth": _HATCH_LW, "hatch.color": _HATCH_COLOR}):
-                for k, hatch in enumerate(_SCAN_HATCHES):
-                    if hatch and (cat == k).any():
-                        ax.pcolor(xe, ye, np.ma.masked_where(cat != k, np.ones(cat.shape)), hatch=hatch,
-                                  facecolor="none", edgecolor=_HATCH_COLOR, linewidth=0.0)
+            draw_categories(ax, xe, ye, cat, _SCAN_COLORS, _SCAN_HATCHES)
             ax.axvline(180, color="k", lw=0.8, ls=":")
             ax.set_xlim(0, 360)
             ax.set_ylim(0, ye[-1])
@@ -1201,7 +1189,7 @@ def scan_legend_handles(categories=None):
     from matplotlib.patches import Patch
 
     keep = range(len(_SCAN_COLORS)) if categories is None else sorted(int(k) for k in categories)
-    return [Patch(facecolor=_SCAN_COLORS[k], edgecolor=_HATCH_COLOR, hatch=_SCAN_HATCHES[k],
+    return [Patch(facecolor=_SCAN_COLORS[k], edgecolor=HATCH_COLOR, hatch=_SCAN_HATCHES[k],
                   label=SCAN_CATEGORY_NAMES[k]) for k in keep]
 
 
@@ -1224,7 +1212,7 @@ def figure_scan(data: ScanData) -> Figure:
         axes[0, i].annotate(f"{case} C.G.", xy=(0.5, 1.0), xycoords="axes fraction", xytext=(0, 22),
                             textcoords="offset points", ha="center", va="bottom", fontsize=10.5,
                             fontweight="bold")
-    with matplotlib.rc_context({"hatch.linewidth": _HATCH_LW}):
+    with matplotlib.rc_context({"hatch.linewidth": HATCH_LINEWIDTH}):
         leg = fig.legend(handles=scan_legend_handles(np.unique(data.category)), loc="lower center", ncol=2,
                          fontsize=8.5, frameon=False, handlelength=2.4, handleheight=1.5)
     return finish(fig, rect=(0, _legend_height(fig, leg), 1, 1))
