@@ -28,6 +28,7 @@ _PUBLIC = {
     "technical_stability": "methods.lyapunov", "TechnicalStabilityResult": "methods.lyapunov",
     "simulate": "methods.simulation", "scaled_norm": "methods.simulation",
     "floquet_multipliers": "methods.floquet", "periodic_lyapunov": "methods.periodic_lyapunov",
+    "prove_quadratic": "methods.proof", "Proof": "methods.proof",
     # the model
     "BladeParameters": "model.parameters", "Blade": "model.blade", "hover_trim": "model.trim",
     "SteadyMotion": "model.steady", "periodic_motion": "model.steady",
@@ -36,7 +37,7 @@ _PUBLIC = {
     "blade_stability": "analysis.stability", "energy_function": "analysis.functions",
     "quadratic_function": "analysis.functions",
     "optimised_quadratic_function": "analysis.functions", "blade_floquet": "analysis.floquet",
-    "certify": "analysis.certify", "Certificate": "analysis.certify",
+    "certify": "analysis.certify", "Certificate": "analysis.certify", "prove_blade": "analysis.proof",
     "forward_flight_trim": "model.forward_trim",
     "sweep": "analysis.sweep", "SweepResult": "analysis.sweep",
     # shared conventions, errors and printing

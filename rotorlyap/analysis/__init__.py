@@ -8,6 +8,8 @@
   followed over the advance ratio;
 * :mod:`~rotorlyap.analysis.certify`: :func:`certify`, the trim, the steady motion, the quadratic
   function and the sound rule in one call;
+* :mod:`~rotorlyap.analysis.proof`: :func:`prove_blade`, the quadratic function's certificate
+  proved by ball arithmetic;
 * :mod:`~rotorlyap.analysis.sweep`: :func:`sweep`, certificates over a grid of blades and
   conditions, on every core or a Dask cluster, as one table.
 """
@@ -15,8 +17,9 @@
 from .certify import Certificate, certify
 from .floquet import blade_floquet, floquet_sweep
 from .functions import energy_function, optimised_quadratic_function, quadratic_function
+from .proof import prove_blade
 from .stability import blade_stability
 from .sweep import SweepResult, sweep
 
 __all__ = ["Certificate", "SweepResult", "blade_floquet", "blade_stability", "certify", "energy_function",
-           "floquet_sweep", "optimised_quadratic_function", "quadratic_function", "sweep"]
+           "floquet_sweep", "optimised_quadratic_function", "prove_blade", "quadratic_function", "sweep"]

@@ -11,7 +11,13 @@ which disturbances, per hinge in degrees and degrees per second, are guaranteed 
 motion within which bound.
 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
-message says so.
+message says so. With ``verify=True`` the same function is also *proved* by ball arithmetic
+(:func:`rotorlyap.analysis.proof.prove_blade`): the result carries a
+:class:`~rotorlyap.methods.proof.Proof` with the bound and start regions that follow from the
+theorem for the model as enclosed, usually smaller than the numerical ones. In forward flight a
+proof needs a steady motion with a residual near round-off, so ``verify=True`` first refines the
+periodic motion by shooting (:func:`rotorlyap.model.steady.refine_motion`) and computes both
+certificates about it.
 """
 
 from __future__ import annotations
@@ -26,7 +32,8 @@ from ..errors import NotAsymptoticallyStableError
 from ..methods.lyapunov import TechnicalStabilityResult
 from ..model.forward_trim import TRIM_TARGETS, ForwardFlightTrim, forward_flight_trim
 from ..model.parameters import BladeParameters
-from ..model.steady import tabulate_motion
+from ..methods.proof import Proof
+from ..model.steady import refine_motion, tabulate_motion
 from .floquet import blade_floquet
 from .functions import quadratic_function
 from .stability import blade_stability
@@ -63,6 +70,9 @@ class Certificate:
         The engine's result (None where no quadratic function exists).
     message : str
         What was certified, or why nothing was.
+    proof : Proof or None
+        ``verify=True``: the proved certificate (bound, level, start radii per azimuth interval,
+        or why nothing was proved); None otherwise.
     """
 
     certified: bool
@@ -75,6 +85,7 @@ class Certificate:
     scales: np.ndarray
     result: TechnicalStabilityResult | None
     message: str
+    proof: Proof | None = None
 
     def _per_hinge(self, radius: float) -> dict:
         omega = self.trim.params.rotor_speed
@@ -99,12 +110,19 @@ class Certificate:
         if not self.certified:
             return head + "\n  " + self.message
         fmt = lambda d: ", ".join(f"{h} {v[0]:.2f} deg / {v[1]:.1f} deg/s" for h, v in d.items())  # noqa: E731
-        return "\n".join([head, f"  start within: {fmt(self.start_region_per_hinge)}",
-                          f"  stays within: {fmt(self.bound_per_hinge)}"])
+        lines = [head, f"  start within: {fmt(self.start_region_per_hinge)}",
+                 f"  stays within: {fmt(self.bound_per_hinge)}"]
+        if self.proof is not None:
+            if self.proof.proved:
+                lines += [f"  proved (ball arithmetic): start within {fmt(self._per_hinge(self.proof.min_lambda0))}",
+                          f"  proved: stays within {fmt(self._per_hinge(self.proof.A))}"]
+            else:
+                lines.append(f"  not proved: {self.proof.message}")
+        return "\n".join(lines)
 
 
 def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", A: float | None = None,
-            scales=None, n_psi: int = 36, Q=None, **engine_options) -> Certificate:
+            scales=None, n_psi: int = 36, Q=None, verify: bool = False, **engine_options) -> Certificate:
     """Certify technical stability of the blade's trimmed steady motion at ``mu``.
 
     Parameters
@@ -127,6 +145,10 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         Azimuths of the grid.
     Q : array_like, optional
         Weight of the quadratic function (default: the identity in scaled coordinates).
+    verify : bool
+        Also prove the certificate by ball arithmetic (:func:`rotorlyap.analysis.proof.prove_blade`,
+        up to the numerical bound; seconds in hover, minutes in forward flight); in forward flight
+        the periodic motion is first refined by shooting (module docstring).
     **engine_options
         Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ...).
 
@@ -145,14 +167,26 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         raise ValueError(f"condition must be one of {TRIM_TARGETS}, got {condition!r}")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
-    steady = trim.steady if mu == 0.0 else tabulate_motion(trim.motion)
+    if mu == 0.0:
+        steady = trim.steady
+    elif verify:
+        from ..model.blade import Blade
+        steady = refine_motion(Blade(trim.params, mu), trim.motion)
+    else:
+        steady = tabulate_motion(trim.motion)
     growth = float(blade_floquet(trim.params, mu, steady=trim.steady).exponents.real.max())
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
     A = DEFAULT_A if A is None else float(A)
     lyap = (lambda blade, st: quadratic_function(blade, st, Q, scales=a)) if Q is not None else \
         (lambda blade, st: quadratic_function(blade, st, scales=a))
+    functions = []
+
+    def keep(blade, st):
+        functions.append(lyap(blade, st))
+        return functions[-1]
+
     try:
-        res = blade_stability(trim.params, mu, lyapunov=lyap, steady=steady, A=A, scales=a, n_psi=n_psi,
+        res = blade_stability(trim.params, mu, lyapunov=keep, steady=steady, A=A, scales=a, n_psi=n_psi,
                               **engine_options)
     except NotAsymptoticallyStableError as exc:
         return Certificate(certified=False, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=0.0,
@@ -164,5 +198,9 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     bound = float(res.A) if ok else 0.0
     if not math.isfinite(lam):
         lam = 0.0
+    proof = None
+    if verify:
+        from .proof import prove_blade
+        proof = prove_blade(functions[-1], bound if ok else A)
     return Certificate(certified=ok, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=bound,
-                       start_region=lam, scales=a, result=res, message=res.message)
+                       start_region=lam, scales=a, result=res, message=res.message, proof=proof)

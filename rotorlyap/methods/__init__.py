@@ -7,6 +7,9 @@
 * :mod:`~rotorlyap.methods.floquet`: Floquet multipliers of linear periodic systems;
 * :mod:`~rotorlyap.methods.periodic_lyapunov`: the periodic Lyapunov equation;
 * :mod:`~rotorlyap.methods.validation`: certificates measured against simulated motions;
+* :mod:`~rotorlyap.methods.intervals`: ball arithmetic (Arb) with derivatives, rigorous
+  eigenvalue bounds;
+* :mod:`~rotorlyap.methods.proof`: proofs of technical stability with a quadratic function;
 * :mod:`~rotorlyap.methods.examples`: small periodic systems for the method chapters.
 
 This layer imports nothing from :mod:`rotorlyap.model` or :mod:`rotorlyap.analysis` (a test

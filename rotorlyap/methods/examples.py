@@ -12,7 +12,8 @@ from typing import Callable
 
 import numpy as np
 
-__all__ = ["PeriodicSystem", "mathieu_duffing", "mathieu_matrix", "pulsed_growth"]
+__all__ = ["PeriodicSystem", "mathieu_duffing", "mathieu_duffing_proof", "mathieu_matrix", "pulsed_growth",
+           "pulsed_growth_proof"]
 
 Function = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
@@ -194,3 +195,114 @@ def mathieu_matrix(a: float, q: float, damping: float = 0.0) -> Callable[[np.nda
         return out
 
     return A
+
+
+# --------------------------------------------------------------------------------------
+# The same systems for proofs in ball arithmetic (rotorlyap.methods.proof)
+# --------------------------------------------------------------------------------------
+
+
+class _ExampleProofSystem:
+    """A :class:`rotorlyap.methods.proof.ProofSystem` from closed forms (see the builders)."""
+
+    def __init__(self, n: int, residual, linear, averaged):
+        self.n = n
+        self._residual, self._linear, self._averaged = residual, linear, averaged
+
+    def residual(self, N: int):
+        return self._residual(N), {}
+
+    def linear(self, N: int):
+        return self._linear(N)
+
+    def averaged_jacobian(self, N: int, radius):
+        return self._averaged(N, np.asarray(radius, dtype=float)), {}
+
+
+def _psi_balls(N: int):
+    from . import intervals as iv
+    from flint import arb
+
+    k = np.arange(N, dtype=float)
+    return iv.hull(k / N, (k + 1) / N) * (2 * arb.pi())
+
+
+def mathieu_duffing_proof(damping: float = 0.4, modulation: float = 0.3, softening: float = 1.0,
+                          cross: float | None = None):
+    """:func:`mathieu_duffing` for :func:`rotorlyap.methods.proof.prove_quadratic`.
+
+    The averaged Jacobian over ``|y| <= r_0`` is exact: ``int_0^1 J(psi, t x) dt =
+    [[0, 1], [-k(psi) + b y^2, -c]]`` (the cubic's ``3 b t^2 y^2`` averages to ``b y^2``), with
+    ``y^2`` in ``[0, r_0^2]``; the steady motion ``x = 0`` has no residual. ``W``'s matrix is
+    ``[[k / 2, d / 2], [d / 2, 1 / 2]]``.
+
+    Returns
+    -------
+    system : ProofSystem
+        The oscillator (scales 1).
+    quadratic : callable
+        ``quadratic(N) -> (S, dS)``, balls of ``W``'s matrix and its derivative.
+    """
+    from . import intervals as iv
+
+    s = mathieu_duffing(damping, modulation, softening, cross)  # checks the arguments
+    del s
+    c, eps, b = float(damping), float(modulation), float(softening)
+    d = c / 2 if cross is None else float(cross)
+
+    def k(N):
+        return iv.cos(_psi_balls(N)) * eps + 1.0
+
+    def jac(N, y2):
+        J = iv.zeros((N, 2, 2))
+        J[:, 0, 1] = J[:, 0, 1] + 1
+        J[:, 1, 0] = -k(N) + y2 * b
+        J[:, 1, 1] = J[:, 1, 1] - c
+        return J
+
+    def quadratic(N):
+        S = iv.zeros((N, 2, 2))
+        S[:, 0, 0] = k(N) * 0.5
+        S[:, 0, 1] = S[:, 0, 1] + d / 2
+        S[:, 1, 0] = S[:, 1, 0] + d / 2
+        S[:, 1, 1] = S[:, 1, 1] + 0.5
+        dS = iv.zeros((N, 2, 2))
+        dS[:, 0, 0] = -iv.sin(_psi_balls(N)) * (eps / 2)
+        return S, dS
+
+    system = _ExampleProofSystem(
+        2, lambda N: iv.zeros((N, 2)), lambda N: jac(N, 0.0),
+        lambda N, r: jac(N, iv.hull(0.0, float(r[0]) ** 2)[()]))
+    return system, quadratic
+
+
+def pulsed_growth_proof(growth: float = 0.5, pulse: float = 2.0, saturation: float = 1.0):
+    """:func:`pulsed_growth` for :func:`rotorlyap.methods.proof.prove_quadratic`: the averaged
+    Jacobian ``a + b cos psi - k x^2`` over ``|x| <= r_0``, ``W``'s matrix ``p(psi) =
+    exp(-2 b sin psi)``. The origin is unstable, so no proof may succeed.
+
+    Returns
+    -------
+    system, quadratic
+        As :func:`mathieu_duffing_proof`.
+    """
+    from . import intervals as iv
+    from flint import arb
+
+    pulsed_growth(growth, pulse, saturation)  # checks the arguments
+    a, b, k = float(growth), float(pulse), float(saturation)
+    exp = np.frompyfunc(lambda x: x.exp(), 1, 1)
+
+    def jac(N, x2):
+        return (iv.cos(_psi_balls(N)) * b + a - x2 * k).reshape(N, 1, 1)
+
+    def quadratic(N):
+        psi = _psi_balls(N)
+        p = np.asarray(exp(iv.sin(psi) * (-2 * b)), dtype=object)
+        return p.reshape(N, 1, 1), (p * iv.cos(psi) * (-2 * b)).reshape(N, 1, 1)
+
+    del arb
+    system = _ExampleProofSystem(
+        1, lambda N: iv.zeros((N, 1)), lambda N: jac(N, 0.0),
+        lambda N, r: jac(N, iv.hull(0.0, float(r[0]) ** 2)[()]))
+    return system, quadratic

@@ -44,7 +44,7 @@ from .parameters import BladeParameters
 
 __all__ = [
     "STEADY_CHOICES", "PeriodicMotion", "SteadyMotion", "TabulatedMotion", "as_steady_motion",
-    "disturbed_rhs", "periodic_motion", "steady_motion", "tabulate_motion",
+    "disturbed_rhs", "periodic_motion", "refine_motion", "steady_motion", "tabulate_motion",
 ]
 
 #: The steady motions :func:`steady_motion` computes by name.
@@ -549,3 +549,81 @@ def tabulate_motion(motion, n: int = 4096) -> TabulatedMotion:
     mid = grid + 0.5 * TWO_PI / n
     err = float(np.abs(tab.xi(mid) - steady.xi(mid)).max())
     return TabulatedMotion(values=tab.values, slopes=tab.slopes, max_error=err, label=steady.label)
+
+
+def refine_motion(blade: Blade, motion, n: int = 4096, *, rtol: float = 1e-12, tol: float = 1e-11,
+                  max_iter: int = 8) -> TabulatedMotion:
+    """The periodic motion by shooting, tabulated: a steady motion with a residual near round-off.
+
+    :func:`periodic_motion` collocates a truncated Fourier series at a few dozen azimuths; between
+    them its residual ``h(psi, xi) - xi'`` is that of the truncation (of order 1e-4 rad/rad^2 in
+    forward flight, where the airfoil table's kinks slow the convergence of the series). A proof
+    (:mod:`rotorlyap.methods.proof`) needs the residual far smaller. This function takes the
+    motion's state at ``psi = 0`` as the start of Newton's method on the return map
+    ``z(0) -> z(2 pi)`` of the full equations (DOP853 with relative tolerance ``rtol``; the
+    Jacobian by the variational equations' finite-difference twin: six neighbouring motions in
+    the same vectorised integration), then samples the converged motion and its right-hand side
+    on ``n`` azimuths.
+
+    Parameters
+    ----------
+    blade : Blade
+        The blade at its advance ratio.
+    motion : PeriodicMotion, TabulatedMotion or SteadyMotion
+        The periodic motion to refine (its state at ``psi = 0`` is the start).
+    n : int
+        Grid of the tabulated result (>= 8).
+    rtol : float
+        Relative tolerance of the integration (the absolute one is ``rtol`` times 1e-2).
+    tol : float
+        Convergence criterion: ``|z(2 pi) - z(0)|`` below ``tol`` (rad, rad/rad).
+    max_iter : int
+        Largest number of Newton iterations.
+
+    Returns
+    -------
+    TabulatedMotion
+        ``max_error``: the largest change of the state at the grid points from ``motion``.
+
+    Raises
+    ------
+    PeriodicMotionError
+        If Newton's method does not converge (with the mismatch reached).
+    """
+    from scipy.integrate import solve_ivp
+
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 8:
+        raise ValueError(f"n must be an integer >= 8, got {n!r}")
+    steady = as_steady_motion(motion)
+    z0 = np.asarray(steady.xi(np.zeros(1))[0], dtype=float)
+    eps = 1e-7
+
+    def rhs(psi, y):
+        return blade.rhs(psi, y.reshape(-1, 6)).reshape(-1)
+
+    def flow(starts: np.ndarray, dense: bool = False):
+        sol = solve_ivp(rhs, (0.0, TWO_PI), starts.reshape(-1), method="DOP853", rtol=rtol,
+                        atol=rtol * 1e-2, dense_output=dense)
+        if not sol.success:
+            raise PeriodicMotionError(f"the integration over one revolution failed: {sol.message}")
+        return sol
+
+    mismatch = math.inf
+    for _ in range(max_iter):
+        starts = np.vstack([z0, z0 + eps * np.eye(6)])
+        end = flow(starts).y[:, -1].reshape(7, 6)
+        F = end[0] - z0
+        mismatch = float(np.max(np.abs(F)))
+        if mismatch < tol:
+            break
+        monodromy = ((end[1:] - end[0]) / eps).T
+        z0 = z0 - np.linalg.solve(monodromy - np.eye(6), F)
+    else:
+        raise PeriodicMotionError(f"shooting did not converge in {max_iter} Newton iterations: "
+                                  f"|z(2 pi) - z(0)| = {mismatch:.3g} (tolerance {tol:.3g})")
+    grid = TWO_PI * np.arange(n) / n
+    values = flow(z0, dense=True).sol(grid).T
+    slopes = blade.rhs(grid, values)
+    change = float(np.max(np.abs(values - steady.xi(grid))))
+    return TabulatedMotion(values=values, slopes=slopes, max_error=change,
+                           label=f"{steady.label} (shooting)")

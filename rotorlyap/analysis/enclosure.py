@@ -1,0 +1,476 @@
+"""The blade's equations in ball arithmetic: enclosures of the right-hand side and its Jacobian.
+
+:class:`BladeEnclosure` evaluates the disturbed equations ``x' = h(psi, xi(psi) + x) - xi'(psi)``
+of :mod:`rotorlyap.model.steady` on *balls* (:mod:`rotorlyap.methods.intervals`): for arrays of
+azimuth intervals and boxes of disturbances it returns balls that contain every value of the
+right-hand side and every (generalised) Jacobian there. These are the facts a proof of
+``W' < 0`` (:mod:`rotorlyap.methods.proof`) is made of.
+
+The model enclosed
+------------------
+The same formulas as the compiled kernel (:mod:`rotorlyap.model.compiled`), in exact arithmetic:
+
+* the generated Lagrangian terms (``_generated/blade_scalar.py``, run with the functions of
+  :class:`rotorlyap.methods.intervals.JetMath` in place of ``math`` and the parameters as exact
+  balls, so that no product of two parameters is rounded);
+* the strip loads: wind, angle of attack ``atan2(u_z, -u_y)`` on a branch continuous over each
+  ball (the airfoil table is periodic in the angle, so any branch gives the same loads), the
+  airfoil table as the periodic piecewise-linear interpolant of its node values on the grid
+  ``-pi + 2 pi k / n`` (:meth:`rotorlyap.model.airfoil.Airfoil.table_rows`; the float kernel
+  evaluates it to round-off), its slope over a ball the hull of the slopes of the segments the
+  ball touches (the generalised derivative at a kink); the Prandtl-Glauert factor with its
+  cap and Lock's drag rise for compressible sections;
+* the steady motion and its derivative as the piecewise cubic Hermite interpolant of
+  :class:`rotorlyap.model.steady.TabulatedMotion` (or a constant state), with period ``2 pi``.
+
+What cannot be enclosed is reported, not hidden: a ball in which the relative wind may vanish
+(the angle of attack is undefined), or in which the angle of attack of a compressible section
+crosses +-90 deg (the Prandtl-Glauert factor jumps there, so the equations are not Lipschitz),
+marks its azimuth interval in :attr:`Evaluation.blocked` with the reason.
+"""
+
+from __future__ import annotations
+
+import math
+import types
+from dataclasses import dataclass
+
+import numpy as np
+from flint import arb
+
+from ..methods import intervals as iv
+from ..methods.intervals import Jet, hermite_enclosure, psi_intervals
+from ..model import compiled as _compiled
+from ..model._generated import blade_scalar as _scalar
+from ..model.compressibility import WAVE_DRAG_FACTOR
+from ..model.steady import TabulatedMotion, as_steady_motion
+
+__all__ = ["BladeEnclosure", "Evaluation"]
+
+_PI = arb.pi()
+_TWO_PI = 2 * _PI
+
+# the generated code with ball functions for ``math``
+_rhs_terms = types.FunctionType(_scalar.rhs_terms_into.__code__,
+                                {**_scalar.rhs_terms_into.__globals__, "math": iv.JetMath},
+                                "rhs_terms_into_balls")
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """Balls of the disturbed right-hand side on azimuth intervals and disturbance boxes.
+
+    Attributes
+    ----------
+    value : numpy.ndarray of arb, shape (N, 6)
+        ``x'`` (rad/rad, rad/rad^2) for every azimuth and disturbance in the boxes.
+    jacobian : numpy.ndarray of arb, shape (N, 6, 6)
+        ``d x' / d x``: every Jacobian (at kinks of the airfoil table: every generalised
+        Jacobian) in the boxes.
+    hessian : numpy.ndarray of arb, shape (N, 6, 6, 6), or None
+        ``order=2``: ``d^2 x'_i / dx_j dx_k`` in the boxes, with the slopes of the piecewise-linear
+        pieces frozen at their hulls over the box (module docstring of :mod:`rotorlyap.methods.proof`).
+    blocked : dict
+        ``{reason: boolean array (N,)}``: intervals where the enclosure is not valid; the
+        balls there are non-finite.
+    slopes : list
+        The slope balls of the piecewise-linear pieces, in the order of evaluation.
+    """
+
+    value: np.ndarray
+    jacobian: np.ndarray
+    hessian: np.ndarray | None
+    blocked: dict
+    slopes: list
+
+
+class _Table:
+    """The airfoil table as a periodic piecewise-linear function of the angle, in balls."""
+
+    def __init__(self, rows: np.ndarray):
+        self.n = rows.shape[0]
+        self.nodes = [np.append(rows[:, 2 * c], rows[0, 2 * c]) for c in range(3)]  # periodic closure
+        diff = [np.diff(v) for v in self.nodes]
+        # every float difference is within one unit in the last place of the exact one
+        self.d_lo = [np.nextafter(d, -np.inf) for d in diff]
+        self.d_hi = [np.nextafter(d, np.inf) for d in diff]
+        self.fac = arb(self.n) / _TWO_PI  # segments per rad
+        self.lookup = np.frompyfunc(self._lookup, 2, 2)
+
+    def _lookup(self, alpha: arb, c: int):
+        """(value, slope per rad) balls of coefficient ``c`` over the angle ball ``alpha``."""
+        if not alpha.is_finite():
+            return arb.nan(), arb.nan()
+        n = self.n
+        s = (alpha + _PI) * self.fac
+        lo = math.floor(np.nextafter(float(s.lower()), -np.inf))
+        hi = math.floor(np.nextafter(float(s.upper()), np.inf))
+        v = self.nodes[c]
+        if hi - lo >= n:
+            return iv.hull(v.min(), v.max())[()], iv.hull(self.d_lo[c].min(), self.d_hi[c].max())[()] * self.fac
+        if lo == hi:
+            i = lo % n
+            frac = s - lo
+            dv = arb(float(v[i + 1])) - arb(float(v[i]))
+            return arb(float(v[i])) + frac * dv, dv * self.fac
+        idx = np.arange(lo, hi + 1) % n
+        nodes = np.concatenate([v[idx], v[idx + 1]])
+        return (iv.hull(nodes.min(), nodes.max())[()],
+                iv.hull(self.d_lo[c][idx].min(), self.d_hi[c][idx].max())[()] * self.fac)
+
+    def __call__(self, alpha: Jet, c: int, tape: "_Slopes") -> Jet:
+        val, slope = self.lookup(alpha.v, c)
+        return _piecewise_linear(alpha, val, slope, tape)
+
+
+def _angle_value(uz: arb, uy: arb) -> arb:
+    """``atan2(uz, -uy)`` on a branch continuous over the balls (mod 2 pi); nan if the relative
+    wind may vanish."""
+    X = -uy
+    if X > 0:
+        return (uz / X).atan()
+    if uz > 0:
+        return _PI / 2 + (uy / uz).atan()
+    if uz < 0:
+        return -_PI / 2 + (uy / uz).atan()
+    if X < 0:
+        return _PI + (uz / X).atan()
+    return arb.nan()
+
+
+_angle = np.frompyfunc(_angle_value, 2, 1)
+_sign = np.frompyfunc(lambda b: 1 if b > 0 else (-1 if b < 0 else 0), 1, 1)
+_nonneg = np.frompyfunc(lambda b: b.nonnegative_part(), 1, 1)
+_union = np.frompyfunc(lambda a, b: a.union(b), 2, 1)
+
+
+def _nan_like(v):
+    out = np.empty(np.shape(v), dtype=object)
+    out[...] = arb.nan()
+    return out
+
+
+def _select(mask, a: Jet, b: Jet, n: int) -> Jet:
+    """Elementwise ``a`` where ``mask`` else ``b`` (gradients and Hessians filled in)."""
+    v = np.where(mask, a.v, b.v)
+    d = np.where(mask[None, :], a.gradient(n), b.gradient(n))
+    h = None
+    if a.h is not None or b.h is not None:
+        h = np.where(mask[None, None, :], a.hessian(n), b.hessian(n))
+    return Jet(v, d, h)
+
+
+def _pos4(x: Jet) -> Jet:
+    """``max(x, 0)**4`` (twice continuously differentiable)."""
+    p = np.asarray(_nonneg(x.v), dtype=object)
+    p2 = p * p
+    return iv._chain(x, p2 * p2, 4 * p2 * p, 12 * p2)
+
+
+class _Slopes:
+    """The slopes of the piecewise-linear pieces of the model (airfoil table, ``|cl|``, the Mach
+    cap), in the order of evaluation: recorded over a box, replayed at its centre."""
+
+    def __init__(self, replay=None):
+        self.record = [] if replay is None else None
+        self._replay = None if replay is None else iter(replay)
+
+    def __call__(self, slope):
+        if self._replay is not None:
+            return next(self._replay)
+        self.record.append(slope)
+        return slope
+
+
+def _piecewise_linear(x: Jet, value, slope, tape: _Slopes) -> Jet:
+    """A piecewise-linear function of ``x``: its value, and as derivative the ball ``slope`` of
+    the slopes it takes over the ball of ``x`` (or, when ``tape`` replays, over the box recorded
+    before); its second derivative is not taken (the slope is frozen, module docstring)."""
+    slope = tape(np.asarray(slope, dtype=object))
+    return iv._chain(x, np.asarray(value, dtype=object), slope, None)
+
+
+def _abs(x: Jet, tape: _Slopes) -> Jet:
+    """``|x|``: slope +-1 where the sign is certain, the ball [-1, 1] elsewhere."""
+    s = np.asarray(_sign(x.v), dtype=int)
+    slope = np.where(s > 0, arb(1), np.where(s < 0, arb(-1), arb(0, 1)))
+    return _piecewise_linear(x, np.frompyfunc(abs, 1, 1)(x.v), slope, tape)
+
+
+def _min_const(x: Jet, cap: float, tape: _Slopes) -> Jet:
+    """``min(x, cap)``: slope 1 below, 0 above, the ball [0, 1] where ``x`` may reach ``cap``."""
+    below = np.asarray(np.frompyfunc(lambda b: b < cap, 1, 1)(x.v), dtype=bool)
+    above = np.asarray(np.frompyfunc(lambda b: b > cap, 1, 1)(x.v), dtype=bool)
+    slope = np.where(below, arb(1), np.where(above, arb(0), arb(0.5, 0.5)))
+    return _piecewise_linear(x, np.frompyfunc(lambda b: b.min(arb(cap)), 1, 1)(x.v), slope, tape)
+
+
+def _attack_angle(u_y: Jet, u_z: Jet) -> Jet:
+    """``alpha = atan2(u_z, -u_y)`` with its derivatives: ``X = -u_y``, ``Y = u_z``,
+    ``alpha_X = -Y / V^2``, ``alpha_Y = X / V^2``, ``alpha_XX = -alpha_YY = 2 X Y / V^4``,
+    ``alpha_XY = (Y^2 - X^2) / V^4``."""
+    X, Y = -u_y, u_z
+    value = np.asarray(_angle(u_z.v, u_y.v), dtype=object)
+    V2 = X.v * X.v + Y.v * Y.v
+    inv = 1 / V2
+    inv2 = inv * inv
+    return iv.bivariate(X, Y, value, -Y.v * inv, X.v * inv, 2 * X.v * Y.v * inv2, -2 * X.v * Y.v * inv2,
+                        (Y.v * Y.v - X.v * X.v) * inv2)
+
+
+class BladeEnclosure:
+    """The disturbed equations of a blade about a steady motion, evaluated on balls.
+
+    Parameters
+    ----------
+    blade : rotorlyap.model.blade.Blade
+        The blade (advance ratio, controls); its airfoil must be tabulated (``table_size > 0``).
+    steady : SteadyMotion, TabulatedMotion or anything ``as_steady_motion`` takes
+        A constant state, or a :class:`~rotorlyap.model.steady.TabulatedMotion` (whose piecewise
+        cubic interpolant is enclosed exactly).
+
+    Raises
+    ------
+    ValueError
+        An airfoil without a table, or a periodic steady motion that is not tabulated.
+    """
+
+    def __init__(self, blade, steady=None):
+        rows = getattr(blade.params.airfoil, "table_rows", lambda: None)()
+        if rows is None:
+            raise ValueError("the proof needs a tabulated airfoil (Airfoil with table_size > 0); "
+                             f"{type(blade.params.airfoil).__name__} without a table is not supported")
+        self.blade = blade
+        data = _compiled.KernelData(blade, rows)
+        self.params = [arb(float(p)) for p in data.P]
+        self.sc = data.scalars
+        self.st = data.stations
+        self.table = _Table(rows)
+        self.controls = [float(v) for v in _compiled._controls(blade)]
+        if isinstance(steady, TabulatedMotion):
+            self.motion = steady
+            self.state = None
+        else:
+            motion = as_steady_motion(steady, blade)
+            if not motion.is_constant:
+                raise ValueError("a periodic steady motion must be a TabulatedMotion "
+                                 "(rotorlyap.model.steady.tabulate_motion): its interpolant is enclosed exactly")
+            self.motion = None
+            self.state = np.asarray(motion.state, dtype=float)
+
+    @property
+    def constant(self) -> bool:
+        """The disturbed equations do not depend on the azimuth (hover about an equilibrium, no
+        cyclic pitch, uniform inflow)."""
+        sc = self.sc
+        return (self.motion is None and sc[_compiled._MUVR] == 0.0 and sc[_compiled._UNIFORM] != 0.0
+                and sc[_compiled._CYCLIC] == 0.0)
+
+    def steady_balls(self, n: int, *, centre: bool = False, second: bool = False, third: bool = False):
+        """Balls of the steady motion and of its first (and second, third) derivatives on ``n``
+        uniform azimuth intervals (or at their midpoints), shape (n, 6) each."""
+        if self.motion is None:
+            zero = iv.balls(np.zeros((n, 6)))
+            xi = iv.balls(np.broadcast_to(self.state, (n, 6)))
+            return (xi, zero) + (zero,) * (int(second or third) + int(third))
+        return hermite_enclosure(self.motion.values, self.motion.slopes, n, centre=centre,
+                                 second=second or third, third=third)
+
+    # ------------------------------------------------------------------ the equations
+    def _accelerations(self, psi, shape, z, T, n: int, blocked: dict, tape: _Slopes):
+        from ..model.compiled import (_ACTIVE, _C0, _C1, _C2, _COMPRESSIBLE, _DN, _IA, _IB, _INV_A,
+                               _MACH_CAP, _MCRIT0, _MN, _MUVR, _OMEGA, _PHI, _PITCH_DAMPED, _QN,
+                               _RX, _RY, _RZ, _TWISTED, _UNIFORM, _WY, _WZ)
+        sc, st = self.sc, self.st
+        om = arb(float(sc[_OMEGA]))
+        F0 = T[6] - z[3] * float(sc[_C0])
+        F1 = T[7] - z[4] * float(sc[_C1])
+        F2 = T[8] - z[5] * float(sc[_C2])
+        if sc[_ACTIVE] != 0.0:
+            vPy, vPz, wx, wy, wz = T[10], T[11], T[12], T[13], T[14]
+            cpsi = iv.cos(psi)
+            muVR = float(sc[_MUVR])
+            if muVR != 0.0:
+                ax = cpsi * muVR
+                ay = -iv.sin(psi) * muVR
+            compressible = sc[_COMPRESSIBLE] != 0.0
+            q_rel = T[12] - T[35] * om
+            sFy = sFz = Mx = My = Mz = 0.0
+            for k in range(st.shape[1]):
+                if sc[_UNIFORM] != 0.0:
+                    az = arb(float(st[_IA, k]))
+                else:
+                    az = cpsi * float(st[_IB, k]) + float(st[_IA, k])
+                if muVR != 0.0:
+                    air_y = T[36] * ax + T[37] * ay + T[38] * az
+                    air_z = T[39] * ax + T[40] * ay + T[41] * az
+                else:
+                    air_y = T[38] * az
+                    air_z = T[41] * az
+                rx = float(st[_RX, k])
+                u_y = air_y - (vPy + wz * rx - wx * float(st[_WZ, k]))
+                u_z = air_z - (vPz + wx * float(st[_WY, k]) - wy * rx)
+                V2 = u_y * u_y + u_z * u_z
+                Vm = iv.sqrt(V2)
+                alpha = _attack_angle(u_y, u_z)
+                wind = np.asarray(np.frompyfunc(lambda b: not b.is_finite(), 1, 1)(alpha.v), dtype=bool)
+                if wind.any():
+                    blocked.setdefault("the relative wind may vanish (angle of attack undefined)",
+                                       np.zeros(shape, dtype=bool))[:] |= wind
+                if sc[_TWISTED] != 0.0:
+                    alpha = alpha + float(st[_PHI, k])
+                cl = self.table(alpha, 0, tape)
+                cd = self.table(alpha, 1, tape)
+                cm = self.table(alpha, 2, tape)
+                pg = 1.0
+                if compressible:
+                    mach = Vm * float(sc[_INV_A])
+                    me = _min_const(mach, float(sc[_MACH_CAP]), tape)
+                    ca = iv.cos(alpha.v)
+                    fwd = np.asarray(np.frompyfunc(lambda b: b > 0, 1, 1)(ca), dtype=bool)
+                    rev = np.asarray(np.frompyfunc(lambda b: b < 0, 1, 1)(ca), dtype=bool)
+                    jump = ~(fwd | rev)
+                    if jump.any():
+                        blocked.setdefault("the angle of attack of a compressible section may cross +-90 deg "
+                                           "(the Prandtl-Glauert factor jumps)",
+                                           np.zeros(shape, dtype=bool))[:] |= jump
+                    one = Jet(np.full(shape, arb(1), dtype=object), None)
+                    pg_f = 1.0 / iv.sqrt(1.0 - me * me)
+                    bad = Jet(_nan_like(np.empty(shape)), _nan_like(np.empty((n,) + shape)),
+                              None if pg_f.h is None else _nan_like(np.empty((n, n) + shape)))
+                    pg = _select(fwd, pg_f, _select(rev, one, bad, n), n)
+                    cl = cl * pg
+                    cm = cm * pg
+                    dm = mach - (float(sc[_MCRIT0]) - 0.1 * _abs(cl, tape))
+                    cd = cd + WAVE_DRAG_FACTOR * _pos4(dm)
+                qn = Vm * float(st[_QN, k])
+                Fy = qn * (cd * u_y + cl * u_z)
+                Fz = qn * (cd * u_z - cl * u_y)
+                Mx_ac = V2 * cm * float(st[_MN, k])
+                if sc[_PITCH_DAMPED] != 0.0:
+                    couple = Vm * q_rel * float(st[_DN, k])
+                    Mx_ac = Mx_ac + (couple * pg if compressible else couple)
+                sFy = Fy + sFy
+                sFz = Fz + sFz
+                Mx = Fz * float(st[_RY, k]) - Fy * float(st[_RZ, k]) + Mx_ac + Mx
+                My = My - Fz * rx
+                Mz = Mz + Fy * rx
+            F0 = F0 + (T[18] * sFy + T[21] * sFz + T[24] * Mx + T[27] * My + T[30] * Mz)
+            F1 = F1 + (T[19] * sFy + T[22] * sFz + T[25] * Mx + T[28] * My + T[31] * Mz)
+            F2 = F2 + (T[20] * sFy + T[23] * sFz + T[26] * Mx + T[29] * My + T[32] * Mz)
+        a, bq, c, d, e, f = T[0], T[1], T[2], T[3], T[4], T[5]
+        A00 = d * f - e * e
+        A01 = c * e - bq * f
+        A02 = bq * e - c * d
+        A11 = a * f - c * c
+        A12 = bq * c - a * e
+        A22 = a * d - bq * bq
+        det = a * A00 + bq * A01 + c * A02
+        s = det * (om * om)
+        return ((A00 * F0 + A01 * F1 + A02 * F2) / s, (A01 * F0 + A11 * F1 + A12 * F2) / s,
+                (A02 * F0 + A12 * F1 + A22 * F2) / s)
+
+    def rhs(self, psi: np.ndarray, z: list, tape: _Slopes | None = None) -> tuple[list, dict]:
+        """``h(psi, z)`` on balls: ``psi`` balls (N,), ``z`` six Jets (values (N,)); returns six
+        Jets and the ``blocked`` dict of :class:`Evaluation`. ``tape`` records (or replays) the
+        slopes of the piecewise-linear pieces."""
+        n = next((zz.d.shape[0] for zz in z if zz.d is not None), 1)
+        shape = psi.v.shape if isinstance(psi, Jet) else psi.shape
+        tape = _Slopes() if tape is None else tape
+        c0, c1, c2 = self.controls
+        if self.sc[_compiled._CYCLIC] != 0.0:
+            theta_c = iv.cos(psi) * c1 + iv.sin(psi) * c2 + c0
+        else:
+            theta_c = arb(c0)
+        T = [None] * 42
+        _rhs_terms(z[0], z[1], z[2], z[3], z[4], z[5], theta_c, self.params, T)
+        T = [t if isinstance(t, Jet) else Jet(np.full(shape, t if isinstance(t, arb) else arb(float(t)),
+                                                      dtype=object)) for t in T]
+        blocked: dict = {}
+        acc = self._accelerations(psi, shape, z, T, n, blocked, tape)
+        return [z[3], z[4], z[5], acc[0], acc[1], acc[2]], blocked
+
+    def residual(self, n: int) -> tuple[np.ndarray, dict]:
+        """Balls of the steady motion's residual ``g0 = h(psi, xi) - xi'`` over ``n`` azimuth intervals.
+
+        A second-order mean-value form in the azimuth. With ``psi_c`` the midpoint of the
+        interval ``Psi``, ``|d| <= w`` the offset from it, ``g0' = G(psi; sigma)`` the derivative
+        in the azimuth computed with the slopes ``sigma`` of the piecewise-linear pieces (the
+        airfoil table, ...) and ``S`` their hulls over ``Psi``:
+        ``g0(psi_c + d) in g0(psi_c) + G(psi_c; S) d + G'(Psi; S) d^2 / 2``
+        (for fixed slopes the residual is smooth in the azimuth; the true slopes lie in ``S``).
+        The residual of a good steady motion is small everywhere, and so are its derivatives, so
+        this is far tighter than ``g0`` evaluated over the interval, where the large terms that
+        cancel in ``h`` each carry their own change over the interval.
+
+        Returns
+        -------
+        g0 : numpy.ndarray of arb, shape (n, 6)
+        blocked : dict
+        """
+        k = np.arange(n, dtype=float)
+        psi_c = iv.balls((k + 0.5) / n) * _TWO_PI
+        xi_c, dxi_c, ddxi_c = self.steady_balls(n, centre=True, second=True)
+        if self.constant:
+            out, blocked = self.rhs(psi_c, [Jet(xi_c[:, i]) for i in range(6)])
+            return np.stack([o.v for o in out], axis=1) - dxi_c, blocked
+        one = iv.zeros((1, n)) + 1
+        # over the interval, second order in the azimuth, recording the slopes
+        Psi, _ = psi_intervals(n)
+        xi, dxi, ddxi, dddxi = self.steady_balls(n, third=True)
+        z = [Jet(xi[:, i], dxi[None, :, i], ddxi[None, None, :, i]) for i in range(6)]
+        tape = _Slopes()
+        out, blocked = self.rhs(Jet(Psi, one, iv.zeros((1, 1, n))), z, tape)
+        curvature = np.stack([o.hessian(1)[0, 0] for o in out], axis=1) - dddxi
+        # at the midpoint: the value, and the first derivative with the slopes of the interval
+        out, _ = self.rhs(psi_c, [Jet(xi_c[:, i]) for i in range(6)])
+        g_c = np.stack([o.v for o in out], axis=1) - dxi_c
+        z = [Jet(xi_c[:, i], dxi_c[None, :, i]) for i in range(6)]
+        out, _ = self.rhs(Jet(psi_c, one), z, _Slopes(tape.record))
+        slope = np.stack([o.d[0] for o in out], axis=1) - ddxi_c
+        w = _PI / n
+        d = arb(0, 1) * w                 # the offset from the midpoint, |d| <= w
+        d2 = arb(0.5, 0.5) * (w * w)      # its square, in [0, w^2]
+        return g_c + slope * d + curvature * (d2 * 0.5), blocked
+
+    def evaluate(self, n: int, radius=None, *, order: int = 1, slopes=None) -> Evaluation:
+        """The disturbed equations on ``n`` azimuth intervals and boxes of disturbances.
+
+        Parameters
+        ----------
+        n : int
+            Uniform azimuth intervals over one period (a multiple of the steady motion's grid).
+        radius : array_like (6,), optional
+            Half-widths of the box of disturbances ``|x_i| <= radius_i`` (rad, rad/rad); None for
+            ``x = 0`` (the steady motion itself).
+        order : {1, 2}
+            2 also encloses the Hessians (with the slopes of the piecewise-linear pieces frozen).
+        slopes : list, optional
+            The :attr:`Evaluation.slopes` of an evaluation over a box (same ``n``): the
+            piecewise-linear pieces take those slopes instead of their own (the Jacobian at the
+            centre with the slopes of the box).
+
+        Returns
+        -------
+        Evaluation
+            ``value``: ``h(psi, xi + x) - xi'(psi)``; ``jacobian``: ``dh/dz`` there.
+        """
+        if order not in (1, 2):
+            raise ValueError(f"order must be 1 or 2, got {order!r}")
+        psi, _ = psi_intervals(n)
+        xi, dxi = self.steady_balls(n)
+        if radius is not None:
+            r = np.asarray(radius, dtype=float)
+            if r.shape != (6,) or not np.all(np.isfinite(r) & (r >= 0)):
+                raise ValueError(f"radius must be 6 finite half-widths >= 0, got {radius!r}")
+            xi = xi + iv.balls(np.zeros((n, 6)), np.broadcast_to(r, (n, 6)))
+        z = iv.variables([xi[:, i] for i in range(6)], order=order)
+        tape = _Slopes(slopes)
+        out, blocked = self.rhs(psi, z, tape)
+        value = np.stack([o.v for o in out], axis=1) - dxi
+        jac = np.moveaxis(np.stack([o.gradient(6) for o in out], axis=0), -1, 0)  # (N, 6, 6)
+        hess = None
+        if order == 2:
+            hess = np.moveaxis(np.stack([o.hessian(6) for o in out], axis=0), -1, 0)  # (N, 6, 6, 6)
+        return Evaluation(value=value, jacobian=jac, hessian=hess, blocked=blocked,
+                          slopes=tape.record if slopes is None else list(slopes))

@@ -1,0 +1,324 @@
+"""Proofs of technical stability with a quadratic Liapunov function, by ball arithmetic.
+
+The sound rule of :mod:`rotorlyap.methods.lyapunov` checks the theorem's condition (h) by
+searches: a *numerical* certificate. This module proves it, for ``W(psi, y) = y^T S(psi) y`` in
+scaled coordinates ``y = x / a`` about a steady motion, by enclosing every term of ``W'`` on
+every interval of azimuth (:mod:`rotorlyap.methods.intervals`).
+
+The inequality
+--------------
+Write the disturbed equations in scaled coordinates as ``y' = g(psi, y)`` and split
+
+    ``g(psi, y) = g0(psi) + K(psi, y) y``,  ``K(psi, y) = int_0^1 J(psi, t y) dt``,
+
+with ``g0`` the residual of the steady motion (zero for an exact one) and ``J`` the Jacobian
+(at kinks of a piecewise-linear model, a generalised Jacobian: the integral form holds for
+Lipschitz ``g``). Then
+
+    ``W' = y^T S' y + 2 y^T S g = y^T N y + 2 y^T S g0``,  ``N = S' + K^T S + S K``.
+
+If ``K(psi, y)`` lies in a ball matrix ``K(psi, rho)`` for every ``|y_i| <= rho`` (the system
+provides it, :class:`ProofSystem`), then for ``|y| <= rho``
+
+    ``W' <= n(psi) |y|^2 + 2 s(psi) e(psi) |y|``,
+
+with ``n`` an upper bound of the largest eigenvalue of every symmetric matrix in the ball
+``S' + K^T S + S K``, ``s`` of the largest eigenvalue of ``S`` and ``e`` of ``|g0|`` (all from
+:func:`rotorlyap.methods.intervals.symmetric_eigenvalue_bounds`). For ``rho -> 0`` the ball
+shrinks to ``J0``, the Jacobian at the steady motion, and ``n`` to the largest eigenvalue of
+``S' + J0^T S + S J0 = -Q`` (up to the residual of the Lyapunov equation): the linear part.
+
+The certificate
+---------------
+For a bound ``A``: the level ``c = A^2 min_psi l(psi)`` (``l`` a lower bound of the smallest
+eigenvalue of ``S``, which must be positive) is at most ``W`` on the sphere ``|y| = A``; on the
+band ``|y| <= A, W >= c`` at an azimuth in interval ``k``, ``|y| >= r_k = sqrt(c / s_k)``
+(``s_k`` an upper bound of the largest eigenvalue of ``S``). The bound above is
+``|y| (n_k |y| + 2 e_k)``, negative on the whole band if ``n_k < 0`` and ``n_k r_k + 2 e_k < 0``. If that holds on every interval, condition (h) holds over the
+whole period, and every motion that starts at an azimuth in interval ``k`` with
+``|y| < lambda0_k = r_k`` stays inside ``|y| < A`` for ever: a proof, for the model as it is
+enclosed (exact arithmetic; the floating-point code evaluates the same functions to round-off).
+:func:`prove_quadratic` finds the largest ``A`` (up to the one requested) for which it holds,
+or says which interval and which term prevented it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Protocol
+
+import numpy as np
+
+from . import intervals as iv
+
+__all__ = ["Proof", "ProofSystem", "lyapunov_enclosure", "prove_quadratic"]
+
+
+class ProofSystem(Protocol):
+    """What :func:`prove_quadratic` needs from a system ``x' = f(psi, x)`` (state units), on
+    ``N`` uniform azimuth intervals of one period.
+
+    ``residual(N)`` returns ``(g0, blocked)``: balls (N, n) of ``f(psi, 0)`` over each interval,
+    and a dict ``{reason: boolean (N,)}`` of intervals where no enclosure exists.
+    ``linear(N)`` returns balls (N, n, n) of the Jacobian ``J0`` at ``x = 0`` (for the report).
+    ``averaged_jacobian(N, radius)`` returns ``(K, blocked)``: balls (N, n, n) that contain the
+    averaged Jacobian ``int_0^1 J(psi, t x) dt`` for every ``|x_i| <= radius_i`` and every
+    ``psi`` of the interval, so that ``f(psi, x) = f(psi, 0) + K x``.
+    """
+
+    n: int
+
+    def residual(self, N: int): ...
+
+    def linear(self, N: int): ...
+
+    def averaged_jacobian(self, N: int, radius: np.ndarray): ...
+
+
+@dataclass(frozen=True)
+class Proof:
+    """Outcome of :func:`prove_quadratic`.
+
+    Attributes
+    ----------
+    proved : bool
+        True if condition (h) is proved on every azimuth interval for the bound ``A``.
+    A : float
+        The proved bound of the scaled norm (0 if nothing is proved).
+    A_requested : float
+        The largest bound tried.
+    level : float
+        ``c``: a lower bound of ``W`` on the sphere ``|y| = A`` over the period (0 if nothing).
+    psi : numpy.ndarray
+        Left ends of the ``N`` azimuth intervals, rad.
+    lambda0 : numpy.ndarray
+        Proved start radius per interval (scaled norm): motions that start in interval ``k``
+        with ``|y| < lambda0[k]`` stay inside ``|y| < A``. Zeros if nothing is proved.
+    n_intervals : int
+        ``N``.
+    terms : dict
+        At the proved bound (or, if nothing is proved, at the smallest bound tried), per interval
+        (arrays (N,)): ``"linear"`` (upper bound of ``lambda_max(S' + J0^T S + S J0)``: about
+        ``-1`` for ``Q = I``), ``"nonlinear"`` (the same with the deviation ``D``: ``n``),
+        ``"deviation"`` (upper bound of ``||D||_2``), ``"residual"`` (``e``, an upper bound of ``|S g0|``
+        with ``g0`` the steady motion's residual), ``"s_max"``, ``"s_min"`` (eigenvalue bounds of ``S``).
+    tried : tuple of (float, bool)
+        Every bound tried and whether it was proved, in order.
+    message : str
+        What was proved, or which interval and which term prevented the proof.
+    """
+
+    proved: bool
+    A: float
+    A_requested: float
+    level: float
+    psi: np.ndarray
+    lambda0: np.ndarray
+    n_intervals: int
+    terms: dict
+    tried: tuple
+    message: str
+
+    @property
+    def min_lambda0(self) -> float:
+        """The smallest proved start radius over the period (0 if nothing)."""
+        return float(np.min(self.lambda0)) if self.proved else 0.0
+
+    def __repr__(self) -> str:  # short and stable: no arrays
+        return (f"Proof(proved={self.proved}, A={self.A:.4g}, min lambda0={self.min_lambda0:.4g}, "
+                f"N={self.n_intervals})")
+
+
+def lyapunov_enclosure(solution) -> Callable[[int], tuple[np.ndarray, np.ndarray]]:
+    """Enclosures of ``S(psi)`` and ``S'(psi)`` of a :class:`~rotorlyap.methods.periodic_lyapunov.PeriodicLyapunovSolution`.
+
+    The matrix is the one ``W`` is computed with: the upper triangle of the computed grid
+    values mirrored (so exactly symmetric), interpolated as the solution interpolates it
+    (constant, or the periodic cubic Hermite interpolant, enclosed by
+    :func:`rotorlyap.methods.intervals.hermite_enclosure`; the period must be ``2 pi``).
+
+    Returns
+    -------
+    callable
+        ``enclose(N) -> (S, dS)``, balls of shape (N, n, n) on ``N`` uniform azimuth intervals.
+    """
+    P = np.asarray(solution.P_grid, dtype=float)
+    D = np.asarray(solution.dP_grid, dtype=float)
+    upper_mask = np.triu(np.ones(P.shape[-2:], dtype=bool))
+    P = np.where(upper_mask, P, np.swapaxes(P, -1, -2))
+    D = np.where(upper_mask, D, np.swapaxes(D, -1, -2))
+    if solution.interpolation == "constant":
+        def enclose(N: int):
+            S = iv.balls(np.broadcast_to(P[0], (N,) + P.shape[1:]))
+            return S, iv.zeros(S.shape)
+        return enclose
+    if solution.interpolation != "hermite":
+        raise ValueError(f"the proof encloses constant and 'hermite' solutions, got {solution.interpolation!r} "
+                         "(solve with a fixed-step method, e.g. method='magnus6')")
+    if not np.isclose(solution.period, 2 * np.pi, rtol=0, atol=1e-12):
+        raise ValueError(f"the proof encloses solutions of period 2 pi, got {solution.period!r}")
+
+    def enclose(N: int):
+        return iv.hermite_enclosure(P, D, N)
+    return enclose
+
+
+def _scaled_matrix(J, a: np.ndarray) -> np.ndarray:
+    """Balls of ``diag(1/a) J diag(a)`` (J balls (N, n, n))."""
+    out = np.empty(J.shape, dtype=object)
+    n = a.size
+    for i in range(n):
+        for j in range(n):
+            out[:, i, j] = (J[:, i, j] * float(a[j])) / float(a[i])
+    return out
+
+
+def _quadratic_form_matrix(S, X):
+    """``X^T S + S X`` (balls (N, n, n))."""
+    SX = np.matmul(S, X)
+    return SX + np.swapaxes(SX, -1, -2)
+
+
+def _norm_upper(v) -> np.ndarray:
+    """Upper bounds of the Euclidean norms of every vector in the ball vectors ``v`` (N, n)."""
+    mag = iv.magnitude(v)
+    return np.nextafter(np.sqrt(iv._sum_up(np.nextafter(mag * mag, np.inf), axis=-1)), np.inf)
+
+
+def _reasons(blocked: dict, psi: np.ndarray) -> str:
+    parts = []
+    for reason, mask in blocked.items():
+        if np.any(mask):
+            k = int(np.flatnonzero(mask)[0])
+            parts.append(f"{reason} ({int(np.sum(mask))} intervals, the first at psi = {np.degrees(psi[k]):.1f} deg)")
+    return "; ".join(parts)
+
+
+def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: float, *, scales,
+                    n_intervals: int = 1, period: float = 2 * np.pi, n_bisect: int = 10,
+                    A_min: float | None = None) -> Proof:
+    """Prove condition (h) for ``W = y^T S y``, ``y = x / a``, and find the largest bound that holds.
+
+    Parameters
+    ----------
+    system : ProofSystem
+        Enclosures of the disturbed equations (state units).
+    quadratic : callable
+        ``quadratic(N) -> (S, dS)``: balls of ``S(psi)`` and ``S'(psi)`` (per rad) in scaled
+        coordinates on ``N`` uniform azimuth intervals (:func:`lyapunov_enclosure`).
+    A : float
+        The largest bound to prove (scaled norm, > 0).
+    scales : array_like
+        The ``a_i`` of the scaled coordinates (> 0).
+    n_intervals : int
+        ``N``, the azimuth intervals (1 for a system and ``S`` that do not depend on psi).
+    period : float
+        Period of the system (the intervals split it).
+    n_bisect : int
+        Bisection steps on ``A`` (between ``A_min`` and ``A``) when ``A`` itself is not proved.
+    A_min : float, optional
+        The smallest bound tried, default ``A * 1e-4``.
+
+    Returns
+    -------
+    Proof
+    """
+    A = float(A)
+    if not (np.isfinite(A) and A > 0):
+        raise ValueError(f"A must be a finite bound > 0, got {A!r}")
+    a = np.asarray(scales, dtype=float)
+    if a.shape != (system.n,) or not np.all(np.isfinite(a) & (a > 0)):
+        raise ValueError(f"scales must be {system.n} finite numbers > 0, got {scales!r}")
+    N = int(n_intervals)
+    if N < 1:
+        raise ValueError(f"n_intervals must be >= 1, got {n_intervals!r}")
+    A_min = A * 1e-4 if A_min is None else float(A_min)
+    psi = period * np.arange(N) / N
+
+    S, dS = quadratic(N)
+    S = np.asarray(S, dtype=object)
+    s_lo, s_hi = iv.symmetric_eigenvalue_bounds(S)
+    g0, blocked0 = system.residual(N)
+    J0y = _scaled_matrix(np.asarray(system.linear(N), dtype=object), a)
+    g0y = np.asarray(g0, dtype=object) / a[None, :]
+    dS = np.asarray(dS, dtype=object)
+    _, m_hi = iv.symmetric_eigenvalue_bounds(dS + _quadratic_form_matrix(S, J0y))
+    e = _norm_upper(np.matmul(S, g0y[:, :, None])[:, :, 0])  # |S g0|
+    s_min = float(np.min(s_lo))
+
+    def attempt(bound: float):
+        K, blocked = system.averaged_jacobian(N, bound * a)
+        Ky = _scaled_matrix(np.asarray(K, dtype=object), a)
+        _, n_hi = iv.symmetric_eigenvalue_bounds(dS + _quadratic_form_matrix(S, Ky))
+        c = np.nextafter(bound * bound * s_min * (1 - 1e-15), -np.inf) if s_min > 0 else 0.0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r = np.nextafter(np.sqrt(np.nextafter(c / s_hi, -np.inf)) * (1 - 1e-15), -np.inf)
+        slope_ok = n_hi < 0
+        # n_hi r < 0: shrunk towards zero, the positive term enlarged, so the sum is an upper bound
+        offset = np.nextafter(n_hi * r * (1 - 1e-15) + 2 * e * (1 + 1e-15), np.inf)
+        ok_k = slope_ok & (offset < 0) & np.isfinite(offset)
+        all_blocked = {**blocked0, **blocked}
+        for mask in all_blocked.values():
+            ok_k &= ~np.asarray(mask, dtype=bool)
+        terms = {"linear": m_hi, "nonlinear": n_hi, "deviation": iv.matrix_norm_upper(Ky - J0y),
+                 "residual": e, "s_max": s_hi, "s_min": s_lo}
+        proved = bool(s_min > 0 and np.all(ok_k))
+        return proved, ok_k, terms, c, r, all_blocked
+
+    tried = []
+    best = None
+    ok, ok_k, terms, c, r, blocked = attempt(A)
+    tried.append((A, ok))
+    first_fail = (ok_k, terms, blocked, A)
+    if ok:
+        best = (A, terms, c, r)
+    else:
+        lo, hi = 0.0, A
+        # a geometric search down to A_min, then bisection between the last failure and the first success
+        bound = A
+        while bound > A_min:
+            bound = max(bound / 4, A_min)
+            ok_b, ok_k_b, terms_b, c_b, r_b, blocked_b = attempt(bound)
+            tried.append((bound, ok_b))
+            if ok_b:
+                best, lo = (bound, terms_b, c_b, r_b), bound
+                break
+            hi = bound
+            first_fail = (ok_k_b, terms_b, blocked_b, bound)
+        if best is not None:
+            for _ in range(n_bisect):
+                mid = np.sqrt(lo * hi)
+                ok_m, _, terms_m, c_m, r_m, _ = attempt(mid)
+                tried.append((mid, ok_m))
+                if ok_m:
+                    best, lo = (mid, terms_m, c_m, r_m), mid
+                else:
+                    hi = mid
+    if best is not None:
+        bound, terms, c, r = best
+        worst = int(np.argmax(terms["nonlinear"] * r + 2 * terms["residual"]))
+        return Proof(
+            proved=True, A=float(bound), A_requested=A, level=float(c), psi=psi, lambda0=np.asarray(r, dtype=float),
+            n_intervals=N, terms=terms, tried=tuple(tried),
+            message=(f"proved: W' < 0 on the band |y| <= A = {bound:.4g}, W >= c over the whole period "
+                     f"({N} azimuth intervals, ball arithmetic); the tightest interval is at psi = "
+                     f"{np.degrees(psi[worst]):.1f} deg"))
+    ok_k, terms, blocked, bound = first_fail
+    k = int(np.flatnonzero(~ok_k)[0]) if np.any(~ok_k) else 0
+    where = f"psi in [{np.degrees(psi[k]):.2f}, {np.degrees(psi[k] + period / N):.2f}] deg"
+    if s_min <= 0:
+        why = f"S is not proved positive definite (smallest eigenvalue bound {s_min:.3g})"
+    elif _reasons(blocked, psi):
+        why = "no enclosure: " + _reasons(blocked, psi)
+    elif not terms["linear"][k] < 0:
+        why = (f"the linear part: lambda_max(S' + J0^T S + S J0) <= {terms['linear'][k]:.3g} is not proved "
+               "negative (the linearised motion is not shown to decay in W)")
+    elif not terms["nonlinear"][k] < 0:
+        why = (f"the nonlinear part at the smallest bound tried, A = {bound:.3g}: lambda_max(N) <= "
+               f"{terms['nonlinear'][k]:.3g} with the linear part {terms['linear'][k]:.3g} and ||K - J0|| <= "
+               f"{terms['deviation'][k]:.3g}")
+    else:
+        why = (f"the steady motion's residual, |S g0| <= {terms['residual'][k]:.3g}, against the band's inner "
+               f"radius at A = {bound:.3g}")
+    return Proof(proved=False, A=0.0, A_requested=A, level=0.0, psi=psi, lambda0=np.zeros(N), n_intervals=N,
+                 terms=terms, tried=tuple(tried), message=f"not proved at {where}: {why}")
