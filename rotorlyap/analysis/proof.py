@@ -29,7 +29,7 @@ from .enclosure import BladeEnclosure
 from ..model.steady import TabulatedMotion
 from .functions import QuadraticFunction
 
-__all__ = ["BladeProofSystem", "prove_blade"]
+__all__ = ["BladeProofSystem", "proof_problem", "prove_blade"]
 
 
 class BladeProofSystem:
@@ -90,28 +90,22 @@ class BladeProofSystem:
         return np.repeat(K, rep, axis=0), {k: np.repeat(v, rep) for k, v in blocked.items()}
 
 
-def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = None,
-                n_coarse: int | None = None, n_bisect: int = 8) -> Proof:
-    """Prove the quadratic function's certificate for the blade, up to the bound ``A``.
+def proof_problem(fun: QuadraticFunction, *, n_intervals: int | None = None, n_coarse: int | None = None):
+    """The system, the enclosed ``S`` and the azimuth intervals :func:`prove_blade` works with.
 
     Parameters
     ----------
     fun : QuadraticFunction
         The function (its blade, steady motion, scales and solution ``P``).
-    A : float
-        The largest bound to prove (scaled norm; usually the numerical certificate's).
-    n_intervals : int, optional
-        Azimuth intervals of the centre's enclosures; default 1 where nothing depends on the
-        azimuth (hover about the equilibrium), else the finest grid of the steady motion and
-        of ``P`` (the intervals must split both grids).
-    n_coarse : int, optional
-        Azimuth intervals of the tube's enclosures (default ``n_intervals / 8``).
-    n_bisect : int
-        Bisection steps on the bound.
+    n_intervals, n_coarse : int, optional
+        As :func:`prove_blade`.
 
     Returns
     -------
-    Proof
+    system : BladeProofSystem
+    quadratic : callable
+        ``quadratic(N) -> (S, dS)`` (:func:`rotorlyap.methods.proof.lyapunov_enclosure`).
+    n_intervals : int
     """
     steady = fun.steady
     motion = None
@@ -120,8 +114,8 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
         if isinstance(xi, TabulatedMotion):
             motion = xi
         if motion is None:
-            raise ValueError("prove_blade needs a constant steady state or a TabulatedMotion "
-                             "(rotorlyap.model.steady.tabulate_motion)")
+            raise ValueError("a proof needs a constant steady state or a TabulatedMotion "
+                             "(rotorlyap.model.steady.tabulate_motion or refine_motion)")
     system = BladeProofSystem(fun.blade, motion if motion is not None else steady, n_coarse)
     if n_intervals is None:
         if system.enclosure.constant and fun.constant:
@@ -133,5 +127,36 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
             n_intervals = int(np.lcm.reduce(grids))
     if n_coarse is None and not system.enclosure.constant:
         system.n_coarse = max(1, n_intervals // 8)
-    return prove_quadratic(system, lyapunov_enclosure(fun.solution), A, scales=fun.scales,
-                           n_intervals=n_intervals, n_bisect=n_bisect)
+    return system, lyapunov_enclosure(fun.solution), int(n_intervals)
+
+
+def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = None,
+                n_coarse: int | None = None, n_bisect: int = 8) -> Proof:
+    """Prove the quadratic function's certificate for the blade, up to the bound ``A``.
+
+    Parameters
+    ----------
+    fun : QuadraticFunction
+        The function (its blade, steady motion, scales and solution ``P``).
+    A : float
+        The largest bound to prove (scaled norm; usually the numerical certificate's).
+    n_intervals : int, optional
+        Azimuth intervals of the residual and of the first term of ``K``; default 1 where nothing
+        depends on the azimuth (hover about the equilibrium), else the finest grid of the steady
+        motion and of ``P`` (the intervals must split both grids).
+    n_coarse : int, optional
+        Azimuth intervals of the Hessians over the tube (default ``n_intervals / 8``).
+    n_bisect : int
+        Bisection steps on the bound.
+
+    Returns
+    -------
+    Proof
+
+    Raises
+    ------
+    ValueError
+        A periodic steady motion that is not tabulated, an airfoil without a table.
+    """
+    system, quadratic, N = proof_problem(fun, n_intervals=n_intervals, n_coarse=n_coarse)
+    return prove_quadratic(system, quadratic, A, scales=fun.scales, n_intervals=N, n_bisect=n_bisect)

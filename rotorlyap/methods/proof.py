@@ -51,7 +51,7 @@ import numpy as np
 
 from . import intervals as iv
 
-__all__ = ["Proof", "ProofSystem", "lyapunov_enclosure", "prove_quadratic"]
+__all__ = ["Proof", "ProofSystem", "lyapunov_enclosure", "nonlinear_bounds", "prove_quadratic"]
 
 
 class ProofSystem(Protocol):
@@ -194,6 +194,47 @@ def _reasons(blocked: dict, psi: np.ndarray) -> str:
     return "; ".join(parts)
 
 
+class _Base:
+    """What every bound shares: ``S`` and its eigenvalue bounds, the residual term, the linear part."""
+
+    def __init__(self, system: ProofSystem, quadratic, a: np.ndarray, N: int):
+        self.system, self.a, self.N = system, a, N
+        S, dS = quadratic(N)
+        self.S = np.asarray(S, dtype=object)
+        self.dS = np.asarray(dS, dtype=object)
+        self.s_lo, self.s_hi = iv.symmetric_eigenvalue_bounds(self.S)
+        g0, self.blocked = system.residual(N)
+        self.J0y = _scaled_matrix(np.asarray(system.linear(N), dtype=object), a)
+        g0y = np.asarray(g0, dtype=object) / a[None, :]
+        _, self.m_hi = iv.symmetric_eigenvalue_bounds(self.dS + _quadratic_form_matrix(self.S, self.J0y))
+        self.e = _norm_upper(np.matmul(self.S, g0y[:, :, None])[:, :, 0])  # |S g0|
+
+    def nonlinear(self, bound: float):
+        """``n`` per interval (upper bound of ``lambda_max(S' + K^T S + S K)``), ``K`` scaled, blocked."""
+        K, blocked = self.system.averaged_jacobian(self.N, bound * self.a)
+        Ky = _scaled_matrix(np.asarray(K, dtype=object), self.a)
+        _, n_hi = iv.symmetric_eigenvalue_bounds(self.dS + _quadratic_form_matrix(self.S, Ky))
+        return n_hi, Ky, blocked
+
+
+def nonlinear_bounds(system: ProofSystem, quadratic: Callable[[int], tuple], bounds, *, scales,
+                     n_intervals: int = 1) -> np.ndarray:
+    """The proof's nonlinear term at several bounds: the largest over the period of ``n``, the upper
+    bound of ``lambda_max(S' + K^T S + S K)`` over the tube ``|y_i| <= A`` (module docstring).
+
+    ``n`` starts at the linear part (about ``-1`` for ``Q = I``) for small ``A`` and grows with
+    ``A``; the proof needs it negative. Parameters as :func:`prove_quadratic`.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``max_k n_k`` for each bound, shape ``(len(bounds),)``.
+    """
+    a = np.asarray(scales, dtype=float)
+    base = _Base(system, quadratic, a, int(n_intervals))
+    return np.array([float(np.max(base.nonlinear(float(A))[0])) for A in np.atleast_1d(bounds)])
+
+
 def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: float, *, scales,
                     n_intervals: int = 1, period: float = 2 * np.pi, n_bisect: int = 10,
                     A_min: float | None = None) -> Proof:
@@ -234,22 +275,13 @@ def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: f
         raise ValueError(f"n_intervals must be >= 1, got {n_intervals!r}")
     A_min = A * 1e-4 if A_min is None else float(A_min)
     psi = period * np.arange(N) / N
-
-    S, dS = quadratic(N)
-    S = np.asarray(S, dtype=object)
-    s_lo, s_hi = iv.symmetric_eigenvalue_bounds(S)
-    g0, blocked0 = system.residual(N)
-    J0y = _scaled_matrix(np.asarray(system.linear(N), dtype=object), a)
-    g0y = np.asarray(g0, dtype=object) / a[None, :]
-    dS = np.asarray(dS, dtype=object)
-    _, m_hi = iv.symmetric_eigenvalue_bounds(dS + _quadratic_form_matrix(S, J0y))
-    e = _norm_upper(np.matmul(S, g0y[:, :, None])[:, :, 0])  # |S g0|
+    base = _Base(system, quadratic, a, N)
+    s_lo, s_hi, e, m_hi, blocked0 = base.s_lo, base.s_hi, base.e, base.m_hi, base.blocked
     s_min = float(np.min(s_lo))
 
     def attempt(bound: float):
-        K, blocked = system.averaged_jacobian(N, bound * a)
-        Ky = _scaled_matrix(np.asarray(K, dtype=object), a)
-        _, n_hi = iv.symmetric_eigenvalue_bounds(dS + _quadratic_form_matrix(S, Ky))
+        n_hi, Ky, blocked = base.nonlinear(bound)
+        J0y = base.J0y
         c = np.nextafter(bound * bound * s_min * (1 - 1e-15), -np.inf) if s_min > 0 else 0.0
         with np.errstate(divide="ignore", invalid="ignore"):
             r = np.nextafter(np.sqrt(np.nextafter(c / s_hi, -np.inf)) * (1 - 1e-15), -np.inf)
