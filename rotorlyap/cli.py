@@ -243,6 +243,9 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of the grid")
     c.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
                    help="quasi-random directions per sphere")
+    c.add_argument("--verify", action="store_true",
+                   help="also prove the certificate by ball arithmetic (rotorlyap.certify(verify=True)): "
+                        "seconds in hover, minutes in forward flight; adds 'proof' to the JSON")
 
     s = sub.add_parser("sweep", help="certify over a grid (mu, C.G., A, any parameter), one CSV/JSON table",
                        description="Run the certificate (as the certify command) at every point of a "
@@ -468,7 +471,9 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
         ``certified``; ``bound`` and ``start_region`` (scaled norm); ``start_region_per_hinge``
         and ``bound_per_hinge`` (``{flap|lag|pitch: {"deg", "deg_per_s"}}``);
         ``growth_rate_per_rev``; ``trim`` (controls and shaft tilt in deg, ``CT_over_sigma``);
-        ``message`` (which says "numerical certificate" where one was given).
+        ``message`` (which says "numerical certificate" where one was given); with ``verify=True``
+        ``proof``: ``proved``, ``bound``, ``level``, ``start_region`` (scaled norm) and per hinge,
+        ``n_intervals``, ``message``.
     """
     import numpy as np
 
@@ -492,6 +497,16 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
         "n_psi": n_psi,
         "n_sphere": n_sphere,
         "message": cert.message,
+        **({} if cert.proof is None else {"proof": {
+            "proved": bool(cert.proof.proved),
+            "kind": "proved by ball arithmetic for the model in exact arithmetic (rotorlyap.methods.proof)",
+            "bound": _sig(cert.proof.A),
+            "level": _sig(cert.proof.level),
+            "start_region": _sig(cert.proof.min_lambda0),
+            "start_region_per_hinge": _per_hinge(cert.proof.min_lambda0, cert.scales, omega),
+            "bound_per_hinge": _per_hinge(cert.proof.A, cert.scales, omega),
+            "n_intervals": int(cert.proof.n_intervals),
+            "message": cert.proof.message}}),
     }
 
 
@@ -505,7 +520,7 @@ def _certify(args) -> int:
     print(f"certifying: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.condition} ...",
           file=sys.stderr, flush=True)
     cert = certify(params, args.mu, condition=args.condition, A=args.A, scales=scales, n_psi=args.n_psi,
-                   n_sphere=args.n_sphere)
+                   n_sphere=args.n_sphere, verify=args.verify)
     _dump(certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere))
     return 0
 

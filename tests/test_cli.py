@@ -156,6 +156,18 @@ def test_certify_prints_the_certificate_per_hinge(capsys):
     assert all(significant_digits_at_most(v) for v in numbers)
 
 
+def test_certify_verify_adds_the_proof(capsys):
+    """certify --verify (hover): the JSON has 'proof', proved, with a bound and start region inside
+    the numerical certificate's, per hinge in the same units."""
+    assert main(["certify", "--mu", "0", "--n-psi", "4", "--n-sphere", "16", "--verify"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    proof = data["proof"]
+    assert proof["proved"] is True and "ball arithmetic" in proof["kind"]
+    assert 0.0 < proof["start_region"] < proof["bound"] <= data["bound"]
+    assert proof["bound_per_hinge"]["flap"]["deg"] == pytest.approx(2.0 * proof["bound"], rel=1e-3)
+    assert proof["n_intervals"] == 1
+
+
 # ---------------------------------------------------------------------- sweep
 
 

@@ -26,7 +26,8 @@ def test_the_nonlinear_term_starts_at_the_linear_part_and_the_enclosure_lies_abo
     assert np.all(enc >= smp - 1e-9)
     # on 1e-3 .. 0.1 the enclosed term crosses zero, the sampled one does not (it does at about 0.5)
     assert np.isfinite(growth.crossing()[0]) and np.all(smp < 0) and np.isnan(growth.crossing("sampled")[0])
-    assert set(growth.facts()) == {"ch10_cross_forward_enc", "ch10_cross_forward_smp", "ch10_cross_forward_gap"}
+    assert set(growth.facts()) == {"ch10_cross_forward_enc", "ch10_cross_forward_smp", "ch10_cross_forward_gap",
+                                   "ch10_gap_lo", "ch10_gap_hi"}
     fig = proofs.figure_nonlinear_growth(growth)
     assert len(fig.axes) == 1
 

@@ -354,10 +354,30 @@ def test_every_table_i_hover_is_proved_within_its_numerical_certificate(cg):
 @pytest.mark.slow
 def test_a_forward_flight_case_is_proved():
     """The trimmed helicopter at mu = 0.1 (forward C.G., compressible sections, Pitt-Peters):
-    certify(verify=True) refines the periodic motion by shooting and proves the certificate."""
+    certify(verify=True) refines the periodic motion by shooting and proves the certificate, and the
+    float W' is negative on the proved band."""
     from rotorlyap import certify
 
+    from rotorlyap.analysis.functions import quadratic_function
+    from rotorlyap.model.steady import refine_motion
+
     cert = certify(BladeParameters.flight_case("forward"), 0.1, verify=True)
-    assert cert.certified and cert.proof.proved
-    assert 0 < cert.proof.A <= cert.bound
-    assert cert.proof.n_intervals == 4096
+    proof = cert.proof
+    assert cert.certified and proof.proved
+    assert 0 < proof.A <= cert.bound
+    assert proof.n_intervals == 4096
+    # the float W' is negative at 4000 states sampled on the proved band, at random azimuths
+    blade = Blade(cert.trim.params, 0.1)
+    motion = refine_motion(blade, cert.trim.motion)
+    q = quadratic_function(blade, motion.steady)
+    rng = np.random.default_rng(RNG_SEED)
+    psi = rng.uniform(0, 2 * np.pi, 4000)
+    u = rng.normal(size=(psi.size, 6))
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    w_unit = q.W(psi, u * q.scales)
+    r_in = np.sqrt(proof.level / w_unit)
+    ok = r_in < proof.A
+    r = r_in + (proof.A - r_in) * rng.uniform(0, 1, psi.size)
+    x = (u * r[:, None] * q.scales)[ok]
+    assert ok.sum() > 1000
+    assert np.all(q.dW(psi[ok], x) < 0)

@@ -43,6 +43,7 @@ from ..methods.intervals import Jet, hermite_enclosure, psi_intervals
 from ..model import compiled as _compiled
 from ..model._generated import blade_scalar as _scalar
 from ..model.compressibility import WAVE_DRAG_FACTOR
+from ..model.equations import solve_sym3
 from ..model.steady import TabulatedMotion, as_steady_motion
 
 __all__ = ["BladeEnclosure", "Evaluation"]
@@ -358,17 +359,8 @@ class BladeEnclosure:
             F0 = F0 + (T[18] * sFy + T[21] * sFz + T[24] * Mx + T[27] * My + T[30] * Mz)
             F1 = F1 + (T[19] * sFy + T[22] * sFz + T[25] * Mx + T[28] * My + T[31] * Mz)
             F2 = F2 + (T[20] * sFy + T[23] * sFz + T[26] * Mx + T[29] * My + T[32] * Mz)
-        a, bq, c, d, e, f = T[0], T[1], T[2], T[3], T[4], T[5]
-        A00 = d * f - e * e
-        A01 = c * e - bq * f
-        A02 = bq * e - c * d
-        A11 = a * f - c * c
-        A12 = bq * c - a * e
-        A22 = a * d - bq * bq
-        det = a * A00 + bq * A01 + c * A02
-        s = det * (om * om)
-        return ((A00 * F0 + A01 * F1 + A02 * F2) / s, (A01 * F0 + A11 * F1 + A12 * F2) / s,
-                (A02 * F0 + A12 * F1 + A22 * F2) / s)
+        s = 1 / (om * om)
+        return tuple(acc * s for acc in solve_sym3(T[0:6], F0, F1, F2))
 
     def rhs(self, psi: np.ndarray, z: list, tape: _Slopes | None = None) -> tuple[list, dict]:
         """``h(psi, z)`` on balls: ``psi`` balls (N,), ``z`` six Jets (values (N,)); returns six

@@ -112,7 +112,8 @@ class ProofTable:
         return "\n".join(out)
 
     def facts(self) -> dict:
-        """``ch10_<key>_{numA,numl0,A,l0,ratio,lin,nonlin,dev,res}`` per case (3 significant digits;
+        """``ch10_<key>_{numA,numl0,A,l0,ratio,lin,nonlin,dev,res,flap,numflap}`` per case (3 significant
+        digits; ``flap``: the start region's flap disturbance alone, deg, 2 digits;
         the residual term as a bound, :func:`_bound_text`), plus ``ch10_ratio_lo``/``_hi`` and ``ch10_hover_res``
         (the largest residual term) over the hovers and the
         flight case's ``ch10_flight_mu`` and ``ch10_flight_n``."""
@@ -121,6 +122,9 @@ class ProofTable:
             key = r.label.split(",")[0].replace(" C.G.", "").replace(" ", "_")
             key = "flight" if r.certificate.mu > 0 else key
             (na, nl), (pa, pl) = r.numerical, r.proved
+            cert = r.certificate
+            f[f"ch10_{key}_flap"] = float(f"{cert._per_hinge(pl)['flap'][0]:.2g}")
+            f[f"ch10_{key}_numflap"] = float(f"{cert._per_hinge(nl)['flap'][0]:.2g}")
             f.update({f"ch10_{key}_numA": float(f"{na:.3g}"), f"ch10_{key}_numl0": float(f"{nl:.3g}"),
                       f"ch10_{key}_A": float(f"{pa:.3g}"), f"ch10_{key}_l0": float(f"{pl:.3g}"),
                       f"ch10_{key}_ratio": Rounded(r.ratio, 3),
@@ -215,11 +219,15 @@ class NonlinearGrowth:
                          for c, e, s in zip(self.cases, ce, cs))
 
     def facts(self) -> dict:
-        """``ch10_cross_<case>_{enc,smp,gap}``: the zero crossings and their ratio (2 digits)."""
+        """``ch10_cross_<case>_{enc,smp,gap}``: the zero crossings and their ratio (2 digits);
+        ``ch10_gap_lo``/``_hi``: the smallest and largest ratio."""
         f = {}
+        gaps = []
         for c, e, s in zip(self.cases, self.crossing("enclosed"), self.crossing("sampled")):
+            gaps.append(s / e)
             f.update({f"ch10_cross_{c}_enc": float(f"{e:.2g}"), f"ch10_cross_{c}_smp": float(f"{s:.2g}"),
                       f"ch10_cross_{c}_gap": float(f"{s / e:.2g}")})
+        f["ch10_gap_lo"], f["ch10_gap_hi"] = float(f"{min(gaps):.2g}"), float(f"{max(gaps):.2g}")
         return f
 
     def export(self) -> dict:

@@ -13,8 +13,9 @@ every value the exact function takes there, whatever the rounding. This module g
   ball per element (``numpy`` object arrays), so a whole set of azimuth intervals is
   evaluated in one call;
 * :func:`symmetric_eigenvalue_bounds`: rigorous bounds of the extreme eigenvalues of every
-  symmetric matrix in a ball matrix, from a floating-point eigen-decomposition made exact
-  by Ostrowski's theorem and Gershgorin's discs;
+  symmetric matrix in a ball matrix: Weyl's inequality about the midpoint matrix, whose
+  eigenvalues a floating-point eigen-decomposition gives, made rigorous by Ostrowski's
+  theorem and Gershgorin's discs;
 * helpers that turn balls into outward-rounded floats (:func:`upper`, :func:`lower`,
   :func:`magnitude`).
 
@@ -468,13 +469,42 @@ def matrix_norm_upper(M) -> np.ndarray:
     return np.nextafter(np.sqrt(_sum_up(np.nextafter(mag * mag, np.inf), axis=(-2, -1))), np.inf)
 
 
+def _point_eigenvalue_bounds(C: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Rigorous bounds of the extreme eigenvalues of the exactly symmetric float matrices ``C``
+    (N, n, n): Ostrowski's theorem and Gershgorin's discs on ``V^T C V`` in ball arithmetic, with
+    ``V`` the floating-point eigenvectors (any accuracy: the off-diagonal balls of ``V^T C V`` are
+    then of round-off size, whichever eigenvectors a LAPACK returns for close eigenvalues)."""
+    n = C.shape[-1]
+    _, V = np.linalg.eigh(C)
+    Vb = balls(V)
+    Vt = np.swapaxes(Vb, -1, -2)
+    B = np.matmul(np.matmul(Vt, balls(C)), Vb)
+    E = np.matmul(Vt, Vb)
+    for i in range(n):
+        E[:, i, i] = E[:, i, i] - 1
+    e = matrix_norm_upper(E)
+    diag = np.einsum("kii->ki", B)
+    mag = magnitude(B)
+    mag[:, np.arange(n), np.arange(n)] = 0.0
+    radius = _sum_up(mag, axis=-1)
+    g_hi = np.nextafter(upper(diag) + radius, np.inf).max(axis=-1)
+    g_lo = np.nextafter(lower(diag) - radius, -np.inf).min(axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lo_den = np.nextafter(1.0 - e, -np.inf)
+        hi_den = np.nextafter(1.0 + e, np.inf)
+        hi = np.where(g_hi >= 0, np.nextafter(g_hi / lo_den, np.inf), np.nextafter(g_hi / hi_den, np.inf))
+        lo = np.where(g_lo >= 0, np.nextafter(g_lo / hi_den, -np.inf), np.nextafter(g_lo / lo_den, -np.inf))
+    ok = (e < 0.5) & np.isfinite(hi) & np.isfinite(lo)
+    return np.where(ok, lo, -np.inf), np.where(ok, hi, np.inf)
+
+
 def symmetric_eigenvalue_bounds(M) -> tuple[np.ndarray, np.ndarray]:
     """Bounds of the smallest and largest eigenvalue of every symmetric matrix in ``M``.
 
     Parameters
     ----------
     M : numpy.ndarray of arb, shape (N, n, n)
-        Ball matrices, each symmetric (the bounds hold for the symmetric matrices inside).
+        Ball matrices (the bounds hold for the symmetric matrices inside each).
 
     Returns
     -------
@@ -484,38 +514,26 @@ def symmetric_eigenvalue_bounds(M) -> tuple[np.ndarray, np.ndarray]:
 
     Notes
     -----
-    With ``V`` the eigenvectors of the midpoint matrix (floating point, any accuracy), the
-    balls ``B = V^T M V`` and ``E = V^T V - I`` are computed in ball arithmetic. Gershgorin's
-    discs bound the eigenvalues of every matrix in ``B`` by ``[g_lo, g_hi]``; Ostrowski's
-    theorem, ``lambda_k(V^T S V) = theta_k lambda_k(S)`` with ``theta_k`` between the extreme
-    eigenvalues of ``V^T V``, in ``[1 - e, 1 + e]`` for ``e >= ||E||_2``, turns them into
-    bounds of ``S`` itself.
+    Weyl's inequality splits the ball into its centre and its spread: with ``C`` the symmetric
+    float matrix of the midpoints (upper triangle mirrored) and ``R`` bounds of ``|S - C|``
+    entrywise (the magnitudes of the balls ``M - C``), every eigenvalue of ``S`` lies within
+    ``rho(R)`` of one of ``C`` (``||S - C||_2 <= rho(R)`` for the non-negative ``R``, bounded by
+    the smaller of its largest row sum and its Frobenius norm). The eigenvalues of ``C`` are
+    bounded by :func:`_point_eigenvalue_bounds`. Both steps are independent of which
+    eigenvectors the floating-point eigen-solver returns (they are arbitrary where eigenvalues
+    are close, as for ``-Q`` with ``Q = I``), so the bounds are the same, to round-off, on
+    every machine.
     """
     M = np.asarray(M, dtype=object)
-    N, n = M.shape[0], M.shape[-1]
+    n = M.shape[-1]
     C = mid(M)
-    C = 0.5 * (C + np.swapaxes(C, -1, -2))
+    iu = np.triu_indices(n, 1)
+    C[:, iu[1], iu[0]] = C[:, iu[0], iu[1]]
     bad = ~np.all(np.isfinite(C), axis=(-2, -1))
     C[bad] = 0.0
-    _, V = np.linalg.eigh(C)
-    Vb = balls(V)
-    Vt = np.swapaxes(Vb, -1, -2)
-    B = np.matmul(np.matmul(Vt, M), Vb)
-    E = np.matmul(Vt, Vb)
-    for i in range(n):
-        E[:, i, i] = E[:, i, i] - 1
-    e = matrix_norm_upper(E)
-    diag_hi = upper(np.einsum("kii->ki", B))
-    diag_lo = lower(np.einsum("kii->ki", B))
-    mag = magnitude(B)
-    mag[:, np.arange(n), np.arange(n)] = 0.0
-    radius = _sum_up(mag, axis=-1)
-    g_hi = np.nextafter(diag_hi + radius, np.inf).max(axis=-1)
-    g_lo = np.nextafter(diag_lo - radius, -np.inf).min(axis=-1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        lo_den = np.nextafter(1.0 - e, -np.inf)
-        hi_den = np.nextafter(1.0 + e, np.inf)
-        hi = np.where(g_hi >= 0, np.nextafter(g_hi / lo_den, np.inf), np.nextafter(g_hi / hi_den, np.inf))
-        lo = np.where(g_lo >= 0, np.nextafter(g_lo / hi_den, -np.inf), np.nextafter(g_lo / lo_den, -np.inf))
-    ok = (e < 0.5) & ~bad & np.isfinite(hi) & np.isfinite(lo)
-    return np.where(ok, lo, -np.inf), np.where(ok, hi, np.inf)
+    R = magnitude(M - balls(C))
+    spread = np.minimum(_sum_up(R, axis=-1).max(axis=-1), matrix_norm_upper(M - balls(C)))
+    lo_c, hi_c = _point_eigenvalue_bounds(C)
+    hi = np.nextafter(hi_c + spread, np.inf)
+    lo = np.nextafter(lo_c - spread, -np.inf)
+    return np.where(bad, -np.inf, lo), np.where(bad, np.inf, hi)
