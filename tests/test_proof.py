@@ -24,7 +24,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import sympy as sp
-from flint import arb
 
 from rotorlyap.conventions import DEFAULT_SCALES
 from rotorlyap.methods import intervals as iv
@@ -232,8 +231,7 @@ class _Rotating:
         return Rp @ R.T + R @ _Rotating.A0 @ R.T
 
     def _balls(self, N):
-        k = np.arange(N, dtype=float)
-        psi = iv.hull(k / N, (k + 1) / N) * (2 * arb.pi())
+        psi = iv.psi_intervals(N)
         c, s = iv.cos(psi), iv.sin(psi)
         (a, b), (cc, d) = self.A0
         J = iv.zeros((N, 2, 2))

@@ -30,12 +30,14 @@ import numpy as np
 from ..conventions import DEFAULT_A, DEFAULT_SCALES, HINGES
 from ..errors import NotAsymptoticallyStableError
 from ..methods.lyapunov import TechnicalStabilityResult
+from ..model.blade import Blade
 from ..model.forward_trim import TRIM_TARGETS, ForwardFlightTrim, forward_flight_trim
 from ..model.parameters import BladeParameters
 from ..methods.proof import Proof
 from ..model.steady import refine_motion, tabulate_motion
 from .floquet import blade_floquet
 from .functions import quadratic_function
+from .proof import prove_blade
 from .stability import blade_stability
 
 __all__ = ["Certificate", "certify"]
@@ -72,7 +74,7 @@ class Certificate:
         What was certified, or why nothing was.
     proof : Proof or None
         ``verify=True``: the proved certificate (bound, level, start radii per azimuth interval,
-        or why nothing was proved); None otherwise.
+        or why nothing was proved); None otherwise, and where no quadratic function exists.
     """
 
     certified: bool
@@ -170,19 +172,16 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     if mu == 0.0:
         steady = trim.steady
     elif verify:
-        from ..model.blade import Blade
         steady = refine_motion(Blade(trim.params, mu), trim.motion)
     else:
         steady = tabulate_motion(trim.motion)
     growth = float(blade_floquet(trim.params, mu, steady=trim.steady).exponents.real.max())
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
     A = DEFAULT_A if A is None else float(A)
-    lyap = (lambda blade, st: quadratic_function(blade, st, Q, scales=a)) if Q is not None else \
-        (lambda blade, st: quadratic_function(blade, st, scales=a))
-    functions = []
+    functions = []  # the function the engine works with, kept for the proof
 
     def keep(blade, st):
-        functions.append(lyap(blade, st))
+        functions.append(quadratic_function(blade, st, Q, scales=a))
         return functions[-1]
 
     try:
@@ -200,7 +199,6 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         lam = 0.0
     proof = None
     if verify:
-        from .proof import prove_blade
         proof = prove_blade(functions[-1], bound if ok else A)
     return Certificate(certified=ok, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=bound,
                        start_region=lam, scales=a, result=res, message=res.message, proof=proof)

@@ -42,6 +42,9 @@ from ..methods import intervals as iv
 from ..methods.intervals import Jet, hermite_enclosure, psi_intervals
 from ..model import compiled as _compiled
 from ..model._generated import blade_scalar as _scalar
+from ..model.compiled import (_ACTIVE, _C0, _C1, _C2, _COMPRESSIBLE, _CYCLIC, _DN, _IA, _IB, _INV_A,
+                              _MACH_CAP, _MCRIT0, _MN, _MUVR, _OMEGA, _PHI, _PITCH_DAMPED, _QN, _RX,
+                              _RY, _RZ, _TWISTED, _UNIFORM, _WY, _WZ)
 from ..model.compressibility import WAVE_DRAG_FACTOR
 from ..model.equations import solve_sym3
 from ..model.steady import TabulatedMotion, as_steady_motion
@@ -142,7 +145,6 @@ def _angle_value(uz: arb, uy: arb) -> arb:
 _angle = np.frompyfunc(_angle_value, 2, 1)
 _sign = np.frompyfunc(lambda b: 1 if b > 0 else (-1 if b < 0 else 0), 1, 1)
 _nonneg = np.frompyfunc(lambda b: b.nonnegative_part(), 1, 1)
-_union = np.frompyfunc(lambda a, b: a.union(b), 2, 1)
 
 
 def _nan_like(v):
@@ -165,7 +167,7 @@ def _pos4(x: Jet) -> Jet:
     """``max(x, 0)**4`` (twice continuously differentiable)."""
     p = np.asarray(_nonneg(x.v), dtype=object)
     p2 = p * p
-    return iv._chain(x, p2 * p2, 4 * p2 * p, 12 * p2)
+    return iv.chain(x, p2 * p2, 4 * p2 * p, 12 * p2)
 
 
 class _Slopes:
@@ -188,7 +190,7 @@ def _piecewise_linear(x: Jet, value, slope, tape: _Slopes) -> Jet:
     the slopes it takes over the ball of ``x`` (or, when ``tape`` replays, over the box recorded
     before); its second derivative is not taken (the slope is frozen, module docstring)."""
     slope = tape(np.asarray(slope, dtype=object))
-    return iv._chain(x, np.asarray(value, dtype=object), slope, None)
+    return iv.chain(x, np.asarray(value, dtype=object), slope, None)
 
 
 def _abs(x: Jet, tape: _Slopes) -> Jet:
@@ -264,8 +266,7 @@ class BladeEnclosure:
         """The disturbed equations do not depend on the azimuth (hover about an equilibrium, no
         cyclic pitch, uniform inflow)."""
         sc = self.sc
-        return (self.motion is None and sc[_compiled._MUVR] == 0.0 and sc[_compiled._UNIFORM] != 0.0
-                and sc[_compiled._CYCLIC] == 0.0)
+        return self.motion is None and sc[_MUVR] == 0.0 and sc[_UNIFORM] != 0.0 and sc[_CYCLIC] == 0.0
 
     def steady_balls(self, n: int, *, centre: bool = False, second: bool = False, third: bool = False):
         """Balls of the steady motion and of its first (and second, third) derivatives on ``n``
@@ -279,9 +280,6 @@ class BladeEnclosure:
 
     # ------------------------------------------------------------------ the equations
     def _accelerations(self, psi, shape, z, T, n: int, blocked: dict, tape: _Slopes):
-        from ..model.compiled import (_ACTIVE, _C0, _C1, _C2, _COMPRESSIBLE, _DN, _IA, _IB, _INV_A,
-                               _MACH_CAP, _MCRIT0, _MN, _MUVR, _OMEGA, _PHI, _PITCH_DAMPED, _QN,
-                               _RX, _RY, _RZ, _TWISTED, _UNIFORM, _WY, _WZ)
         sc, st = self.sc, self.st
         om = arb(float(sc[_OMEGA]))
         F0 = T[6] - z[3] * float(sc[_C0])
@@ -370,7 +368,7 @@ class BladeEnclosure:
         shape = psi.v.shape if isinstance(psi, Jet) else psi.shape
         tape = _Slopes() if tape is None else tape
         c0, c1, c2 = self.controls
-        if self.sc[_compiled._CYCLIC] != 0.0:
+        if self.sc[_CYCLIC] != 0.0:
             theta_c = iv.cos(psi) * c1 + iv.sin(psi) * c2 + c0
         else:
             theta_c = arb(c0)
@@ -408,7 +406,7 @@ class BladeEnclosure:
             return np.stack([o.v for o in out], axis=1) - dxi_c, blocked
         one = iv.zeros((1, n)) + 1
         # over the interval, second order in the azimuth, recording the slopes
-        Psi, _ = psi_intervals(n)
+        Psi = psi_intervals(n)
         xi, dxi, ddxi, dddxi = self.steady_balls(n, third=True)
         z = [Jet(xi[:, i], dxi[None, :, i], ddxi[None, None, :, i]) for i in range(6)]
         tape = _Slopes()
@@ -449,7 +447,7 @@ class BladeEnclosure:
         """
         if order not in (1, 2):
             raise ValueError(f"order must be 1 or 2, got {order!r}")
-        psi, _ = psi_intervals(n)
+        psi = psi_intervals(n)
         xi, dxi = self.steady_balls(n)
         if radius is not None:
             r = np.asarray(radius, dtype=float)

@@ -32,6 +32,11 @@ from .functions import QuadraticFunction
 __all__ = ["BladeProofSystem", "proof_problem", "prove_blade"]
 
 
+def _spread(balls: np.ndarray, blocked: dict, rep: int):
+    """Each interval's balls and blocked flags repeated ``rep`` times (coarse to fine intervals)."""
+    return np.repeat(balls, rep, axis=0), {k: np.repeat(v, rep) for k, v in blocked.items()}
+
+
 class BladeProofSystem:
     """The blade's disturbed equations as a :class:`rotorlyap.methods.proof.ProofSystem`.
 
@@ -51,7 +56,6 @@ class BladeProofSystem:
     def __init__(self, blade, steady, n_coarse: int | None = None):
         self.enclosure = BladeEnclosure(blade, steady)
         self.n_coarse = n_coarse
-        self.evaluations = 0
 
     def _coarse(self, N: int) -> int:
         if self.enclosure.constant:
@@ -64,8 +68,7 @@ class BladeProofSystem:
     def residual(self, N: int):
         Nc = 1 if self.enclosure.constant else N
         g0, blocked = self.enclosure.residual(Nc)
-        rep = N // Nc
-        return np.repeat(g0, rep, axis=0), {k: np.repeat(v, rep) for k, v in blocked.items()}
+        return _spread(g0, blocked, N // Nc)
 
     def linear(self, N: int):
         Nc = 1 if self.enclosure.constant else N
@@ -86,8 +89,7 @@ class BladeProofSystem:
         for key in set(tube.blocked) | set(at_centre.blocked):
             blocked[key] = (np.repeat(tube.blocked.get(key, np.zeros(Nc, bool)), Nf // Nc)
                             | at_centre.blocked.get(key, np.zeros(Nf, bool)))
-        rep = N // Nf
-        return np.repeat(K, rep, axis=0), {k: np.repeat(v, rep) for k, v in blocked.items()}
+        return _spread(K, blocked, N // Nf)
 
 
 def proof_problem(fun: QuadraticFunction, *, n_intervals: int | None = None, n_coarse: int | None = None):

@@ -43,8 +43,9 @@ __all__ = ["FLIGHT_CASE", "HOVER_CASES", "ExampleProofs", "NonlinearGrowth", "Pr
 #: The Table I C.G. cases proved in hover.
 HOVER_CASES: tuple[str, ...] = ("forward", "neutral", "backward")
 #: The forward-flight case proved: the trimmed helicopter of chapter 8 (flight_case), forward C.G.,
-#: mu = 0.1 (the largest advance ratio of the table without reverse flow on a compressible
-#: section, where the equations jump and no proof of this kind exists).
+#: mu = 0.1: the largest advance ratio of chapter 8's grid (steps of 0.05) below 0.15, where the
+#: reverse-flow edge reaches a compressible section, the equations jump and no proof of this kind
+#: exists (:func:`reverse_flow_block`).
 FLIGHT_CASE: tuple[str, float] = ("forward", 0.1)
 
 
@@ -54,12 +55,15 @@ class ProofRow:
 
     Attributes
     ----------
+    key : str
+        The case in the names of the glued facts (``forward``, ..., ``flight``).
     label : str
         The case as the table names it.
     certificate : Certificate
         :func:`rotorlyap.certify` with ``verify=True``.
     """
 
+    key: str
     label: str
     certificate: Certificate
 
@@ -130,8 +134,7 @@ class ProofTable:
         flight case's ``ch10_flight_mu`` and ``ch10_flight_n``."""
         f = {}
         for r in self.rows:
-            key = r.label.split(",")[0].replace(" C.G.", "").replace(" ", "_")
-            key = "flight" if r.certificate.mu > 0 else key
+            key = r.key
             (na, nl), (pa, pl) = r.numerical, r.proved
             cert = r.certificate
             f[f"ch10_{key}_flap"] = float(f"{cert._per_hinge(pl)['flap'][0]:.2g}")
@@ -174,13 +177,13 @@ class ProofTable:
 def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
     """:func:`rotorlyap.certify` with ``verify=True`` for each hover case (Table I, hover trim) and
     the forward-flight case (``None`` to skip it): the trimmed helicopter of chapter 8."""
-    rows = [ProofRow(f"{cg} C.G., hover", certify(BladeParameters.table_i(cg), 0.0, verify=True))
+    rows = [ProofRow(cg, f"{cg} C.G., hover", certify(BladeParameters.table_i(cg), 0.0, verify=True))
             for cg in hover_cases]
     residual = float("nan")
     if flight is not None:
         cg, mu = flight
         cert = certify(BladeParameters.flight_case(cg), float(mu), verify=True)
-        rows.append(ProofRow(f"{cg} C.G., mu = {mu:g}, trimmed", cert))
+        rows.append(ProofRow("flight", f"{cg} C.G., mu = {mu:g}, trimmed", cert))
         residual = _collocation_residual(cert)
     return ProofTable(tuple(rows), residual)
 

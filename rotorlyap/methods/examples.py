@@ -219,14 +219,6 @@ class _ExampleProofSystem:
         return self._averaged(N, np.asarray(radius, dtype=float)), {}
 
 
-def _psi_balls(N: int):
-    from . import intervals as iv
-    from flint import arb
-
-    k = np.arange(N, dtype=float)
-    return iv.hull(k / N, (k + 1) / N) * (2 * arb.pi())
-
-
 def mathieu_duffing_proof(damping: float = 0.4, modulation: float = 0.3, softening: float = 1.0,
                           cross: float | None = None):
     """:func:`mathieu_duffing` for :func:`rotorlyap.methods.proof.prove_quadratic`.
@@ -245,13 +237,12 @@ def mathieu_duffing_proof(damping: float = 0.4, modulation: float = 0.3, softeni
     """
     from . import intervals as iv
 
-    s = mathieu_duffing(damping, modulation, softening, cross)  # checks the arguments
-    del s
+    mathieu_duffing(damping, modulation, softening, cross)  # checks the arguments
     c, eps, b = float(damping), float(modulation), float(softening)
     d = c / 2 if cross is None else float(cross)
 
     def k(N):
-        return iv.cos(_psi_balls(N)) * eps + 1.0
+        return iv.cos(iv.psi_intervals(N)) * eps + 1.0
 
     def jac(N, y2):
         J = iv.zeros((N, 2, 2))
@@ -267,7 +258,7 @@ def mathieu_duffing_proof(damping: float = 0.4, modulation: float = 0.3, softeni
         S[:, 1, 0] = S[:, 1, 0] + d / 2
         S[:, 1, 1] = S[:, 1, 1] + 0.5
         dS = iv.zeros((N, 2, 2))
-        dS[:, 0, 0] = -iv.sin(_psi_balls(N)) * (eps / 2)
+        dS[:, 0, 0] = -iv.sin(iv.psi_intervals(N)) * (eps / 2)
         return S, dS
 
     system = _ExampleProofSystem(
@@ -287,21 +278,19 @@ def pulsed_growth_proof(growth: float = 0.5, pulse: float = 2.0, saturation: flo
         As :func:`mathieu_duffing_proof`.
     """
     from . import intervals as iv
-    from flint import arb
 
     pulsed_growth(growth, pulse, saturation)  # checks the arguments
     a, b, k = float(growth), float(pulse), float(saturation)
     exp = np.frompyfunc(lambda x: x.exp(), 1, 1)
 
     def jac(N, x2):
-        return (iv.cos(_psi_balls(N)) * b + a - x2 * k).reshape(N, 1, 1)
+        return (iv.cos(iv.psi_intervals(N)) * b + a - x2 * k).reshape(N, 1, 1)
 
     def quadratic(N):
-        psi = _psi_balls(N)
+        psi = iv.psi_intervals(N)
         p = np.asarray(exp(iv.sin(psi) * (-2 * b)), dtype=object)
         return p.reshape(N, 1, 1), (p * iv.cos(psi) * (-2 * b)).reshape(N, 1, 1)
 
-    del arb
     system = _ExampleProofSystem(
         1, lambda N: iv.zeros((N, 1)), lambda N: jac(N, 0.0),
         lambda N, r: jac(N, iv.hull(0.0, float(r[0]) ** 2)[()]))

@@ -45,9 +45,9 @@ import numpy as np
 from flint import arb
 
 __all__ = [
-    "Jet", "ball", "balls", "bivariate", "hull", "upper", "lower", "magnitude", "constant",
-    "variables", "zeros", "sin", "cos", "sqrt", "symmetric_eigenvalue_bounds", "matrix_norm_upper",
-    "mid", "psi_intervals", "hermite_enclosure",
+    "Jet", "balls", "bivariate", "chain", "hull", "upper", "lower", "magnitude", "variables", "zeros", "sin",
+    "cos", "sqrt", "symmetric_eigenvalue_bounds", "matrix_norm_upper", "norm_upper", "mid",
+    "psi_intervals", "hermite_enclosure",
 ]
 
 _sin = np.frompyfunc(lambda b: b.sin(), 1, 1)
@@ -59,12 +59,6 @@ _mag = np.frompyfunc(lambda b: float(b.abs_upper()) if b.is_finite() else math.i
 _mid = np.frompyfunc(lambda b: float(b.mid()) if b.is_finite() else math.nan, 1, 1)
 _make = np.frompyfunc(lambda m, r: arb(float(m), float(r)), 2, 1)
 _union = np.frompyfunc(lambda a, b: a.union(b), 2, 1)
-
-
-def ball(mid: float, rad: float = 0.0) -> arb:
-    """One ball ``[mid - rad, mid + rad]`` (both Python floats, taken exactly; the radius
-    is rounded up)."""
-    return arb(float(mid), float(rad))
 
 
 def balls(mid, rad=0.0) -> np.ndarray:
@@ -202,9 +196,9 @@ class Jet:
             return o._scale(self.v)
         d = _add(None if self.d is None else self.d * o.v, None if o.d is None else o.d * self.v)
         h = None
-        if self.h is not None or o.h is not None or (self.d is not None and o.d is not None):
+        if self.h is not None or o.h is not None:  # second order (variables(order=2) carry Hessians)
             h = _add(None if self.h is None else self.h * o.v, None if o.h is None else o.h * self.v)
-            if self.d is not None and o.d is not None and _second(self, o):
+            if self.d is not None and o.d is not None:
                 h = _add(h, _sym_outer(self.d, o.d))
         return Jet(self.v * o.v, d, h)
 
@@ -213,7 +207,7 @@ class Jet:
     def reciprocal(self) -> "Jet":
         """``1 / self`` (a ball containing zero gives a non-finite result)."""
         r = 1 / self.v
-        return _chain(self, r, -(r * r), 2 * r * r * r)
+        return chain(self, r, -(r * r), 2 * r * r * r)
 
     def __truediv__(self, o):
         if isinstance(o, Jet):
@@ -225,19 +219,6 @@ class Jet:
 
     def __rtruediv__(self, o):
         return self.reciprocal()._scale(self._c(o))
-
-    def __pow__(self, k):
-        if not (isinstance(k, int) and k >= 1):
-            raise ValueError(f"Jet ** k needs an integer k >= 1, got {k!r}")
-        out = self
-        for _ in range(k - 1):
-            out = out * self
-        return out
-
-    @property
-    def second_order(self) -> bool:
-        """This Jet carries a Hessian."""
-        return self.h is not None
 
     def gradient(self, n: int) -> np.ndarray:
         """The gradient as an (n, N) object array (zeros where the Jet has none)."""
@@ -252,13 +233,6 @@ class Jet:
         return zeros((n, n) + np.shape(self.v))
 
 
-def _second(a: Jet, b: Jet) -> bool:
-    """Whether a product of these Jets needs its Hessian: one of them is second order, or
-    both have gradients and were made by second-order :func:`variables` (marked by a Hessian
-    array, possibly of zeros)."""
-    return a.h is not None or b.h is not None
-
-
 def zeros(shape) -> np.ndarray:
     """An object array of exact zero balls."""
     out = np.empty(shape, dtype=object)
@@ -266,9 +240,10 @@ def zeros(shape) -> np.ndarray:
     return out
 
 
-def _chain(x: Jet, f, f1, f2=None) -> Jet:
+def chain(x: Jet, f, f1, f2=None) -> Jet:
     """``g(x)`` from its value ``f``, first derivative ``f1`` and second ``f2`` (balls, (N,))
-    at ``x``: the chain rule to first or second order."""
+    at ``x``: the chain rule to first or second order (``f2=None``: the second derivative is
+    not taken, as for a piecewise-linear ``g`` whose slope is frozen)."""
     if x.d is None:
         return Jet(f, None, None)
     d = x.d * f1
@@ -295,11 +270,6 @@ def bivariate(x: Jet, y: Jet, f, fx, fy, fxx=None, fyy=None, fxy=None) -> Jet:
     return Jet(f, d, h)
 
 
-def constant(v) -> Jet:
-    """A Jet with no dependence on the inputs (a float, a ball or an array of balls)."""
-    return Jet(v, None, None)
-
-
 def variables(values, order: int = 1) -> list[Jet]:
     """The inputs themselves: ``values`` a list of ``n`` arrays of balls (shape (N,)); the
     gradient of the i-th is the i-th unit vector; ``order=2`` carries Hessians (zero)."""
@@ -322,7 +292,7 @@ def _apply(x, fv, f1, f2):
         g = np.asarray(fv(x.v), dtype=object)
         if x.d is None:
             return Jet(g)
-        return _chain(x, g, np.asarray(f1(x.v, g), dtype=object),
+        return chain(x, g, np.asarray(f1(x.v, g), dtype=object),
                       None if x.h is None else np.asarray(f2(x.v, g), dtype=object))
     if isinstance(x, np.ndarray):
         return np.asarray(fv(x), dtype=object)
@@ -351,7 +321,6 @@ class JetMath:
     sin = staticmethod(sin)
     cos = staticmethod(cos)
     sqrt = staticmethod(sqrt)
-    pi = math.pi
 
 
 # --------------------------------------------------------------------------------------
@@ -360,22 +329,13 @@ class JetMath:
 
 _PI = arb.pi()
 _TWO_PI = 2 * _PI
-_union2 = np.frompyfunc(lambda a, b: a.union(b), 2, 1)
 
 
-def psi_intervals(n: int) -> tuple[np.ndarray, np.ndarray]:
-    """``n`` uniform azimuth intervals covering one period ``[0, 2 pi]``.
-
-    Returns
-    -------
-    psi : numpy.ndarray of arb, shape (n,)
-        Balls containing the intervals ``[2 pi k / n, 2 pi (k + 1) / n]``.
-    t : numpy.ndarray of arb, shape (n,)
-        The same intervals in units of the period, ``[k / n, (k + 1) / n]`` (exact).
-    """
+def psi_intervals(n: int) -> np.ndarray:
+    """Balls containing the ``n`` uniform azimuth intervals ``[2 pi k / n, 2 pi (k + 1) / n]`` of
+    one period, shape (n,)."""
     k = np.arange(n, dtype=float)
-    t = hull(k / n, (k + 1) / n)
-    return t * _TWO_PI, t
+    return hull(k / n, (k + 1) / n) * _TWO_PI
 
 
 def hermite_enclosure(values: np.ndarray, slopes: np.ndarray, n: int, *, centre: bool = False,
@@ -446,7 +406,7 @@ def _hull_groups(x: np.ndarray, group: int) -> np.ndarray:
     x = x.reshape((x.shape[0] // group, group) + x.shape[1:])
     out = x[:, 0]
     for i in range(1, group):
-        out = np.asarray(_union2(out, x[:, i]), dtype=object)
+        out = np.asarray(_union(out, x[:, i]), dtype=object)
     return out
 
 
@@ -462,11 +422,17 @@ def _sum_up(x, axis) -> np.ndarray:
     return np.nextafter(np.sum(x, axis=axis) * (1.0 + 1e-12), np.inf)
 
 
+def norm_upper(x, axis=-1) -> np.ndarray:
+    """An upper bound of the Euclidean (Frobenius) norm along ``axis`` of every array in the
+    balls ``x``: the norm of the entrywise magnitudes."""
+    mag = magnitude(x)
+    return np.nextafter(np.sqrt(_sum_up(np.nextafter(mag * mag, np.inf), axis=axis)), np.inf)
+
+
 def matrix_norm_upper(M) -> np.ndarray:
     """An upper bound of the spectral norm of every matrix in the ball matrices ``M``
     (shape (..., n, n)): the Frobenius norm of the entrywise magnitudes."""
-    mag = magnitude(M)
-    return np.nextafter(np.sqrt(_sum_up(np.nextafter(mag * mag, np.inf), axis=(-2, -1))), np.inf)
+    return norm_upper(M, axis=(-2, -1))
 
 
 def _point_eigenvalue_bounds(C: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

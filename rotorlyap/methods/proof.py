@@ -179,12 +179,6 @@ def _quadratic_form_matrix(S, X):
     return SX + np.swapaxes(SX, -1, -2)
 
 
-def _norm_upper(v) -> np.ndarray:
-    """Upper bounds of the Euclidean norms of every vector in the ball vectors ``v`` (N, n)."""
-    mag = iv.magnitude(v)
-    return np.nextafter(np.sqrt(iv._sum_up(np.nextafter(mag * mag, np.inf), axis=-1)), np.inf)
-
-
 def _reasons(blocked: dict, psi: np.ndarray) -> str:
     parts = []
     for reason, mask in blocked.items():
@@ -207,7 +201,7 @@ class _Base:
         self.J0y = _scaled_matrix(np.asarray(system.linear(N), dtype=object), a)
         g0y = np.asarray(g0, dtype=object) / a[None, :]
         _, self.m_hi = iv.symmetric_eigenvalue_bounds(self.dS + _quadratic_form_matrix(self.S, self.J0y))
-        self.e = _norm_upper(np.matmul(self.S, g0y[:, :, None])[:, :, 0])  # |S g0|
+        self.e = iv.norm_upper(np.matmul(self.S, g0y[:, :, None])[:, :, 0])  # |S g0|
 
     def nonlinear(self, bound: float):
         """``n`` per interval (upper bound of ``lambda_max(S' + K^T S + S K)``), ``K`` scaled, blocked."""
