@@ -35,11 +35,12 @@ _PUBLIC = {
     "derived_quantities": "model.modes",
     # the blade in the methods
     "blade_stability": "analysis.stability", "energy_function": "analysis.functions",
-    "quadratic_function": "analysis.functions",
+    "quadratic_function": "analysis.functions", "designed_function": "analysis.nonlinear_functions",
     "optimised_quadratic_function": "analysis.functions", "blade_floquet": "analysis.floquet",
     "certify": "analysis.certify", "Certificate": "analysis.certify", "prove_blade": "analysis.proof",
     "forward_flight_trim": "model.forward_trim",
     "sweep": "analysis.sweep", "SweepResult": "analysis.sweep",
+    "stable_region": "analysis.region", "StableRegion": "analysis.region",
     # shared conventions, errors and printing
     "DEFAULT_A": "conventions", "DEFAULT_SCALES": "conventions",
     "PAPER_TEST_DISTURBANCES": "conventions", "STATE_NAMES": "conventions",

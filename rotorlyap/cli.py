@@ -47,6 +47,9 @@ __all__ = ["build_parser", "main"]
 
 CG_CHOICES = ("forward", "neutral", "backward")
 CONDITIONS = ("propulsive", "flapping", "none")  # rotorlyap.model.forward_trim.TRIM_TARGETS
+FUNCTION_CHOICES = ("auto", "quadratic", "energy", "polynomial")  # rotorlyap.analysis.certify.FUNCTIONS
+_FUNCTION_NAMES = {"quadratic": "quadratic function", "energy": "augmented energy (designed)",
+                   "polynomial": "polynomial function (designed)"}
 HINGE_SYMBOLS = ("flap", "lag", "pitch")  # rotorlyap.conventions.HINGES: the order of the state
 SIGNIFICANT = 4  # digits of a printed number
 MAX_LIST = 10_000  # values of one grid axis (a start:stop:step typo should not start a week of work)
@@ -227,8 +230,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="quasi-random directions per sphere (strict reading)")
 
     c = sub.add_parser("certify", help="certify the trimmed blade (rotorlyap.certify), printed as JSON",
-                       description="Trim the helicopter, take the blade's own steady motion, the quadratic "
-                                   "Liapunov function and the sound rule (rotorlyap.certify); print what is "
+                       description="Trim the helicopter, take the blade's own steady motion, a Liapunov "
+                                   "function (by default the larger certificate of the quadratic function and "
+                                   "the augmented energy) and the sound rule (rotorlyap.certify); print what is "
                                    "certified, per hinge in deg and deg/s, as JSON.")
     _blade_options(c)
     c.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
@@ -243,6 +247,10 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of the grid")
     c.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
                    help="quasi-random directions per sphere")
+    c.add_argument("--function", choices=FUNCTION_CHOICES, default="auto",
+                   help="the Liapunov function: auto (default: the quadratic function and the augmented "
+                        "energy, the larger certificate; a minute or more), quadratic (seconds, the linear "
+                        "range), energy (the augmented energy), polynomial")
     c.add_argument("--verify", action="store_true",
                    help="also prove the certificate by ball arithmetic (rotorlyap.certify(verify=True)): "
                         "seconds in hover, minutes in forward flight; adds 'proof' to the JSON")
@@ -269,6 +277,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--condition", type=_name_list("--condition", CONDITIONS), default=["propulsive"],
                    help="flight conditions, e.g. propulsive,none (default propulsive)")
     s.add_argument("--out", type=_table_path, required=True, help="the table: FILE.csv or FILE.json")
+    s.add_argument("--function", choices=FUNCTION_CHOICES, default="quadratic",
+                   help="the Liapunov function of every point: quadratic (default: seconds a point), auto "
+                        "(the larger of the quadratic function and the augmented energy: a minute or more a "
+                        "point), energy, polynomial")
     s.add_argument("--workers", type=_int_at_least("--workers", 1), default=None,
                    help="processes (or local Dask workers); default every core; 1 runs in this process")
     s.add_argument("--scheduler", default=None, metavar="local|ADDRESS",
@@ -483,8 +495,11 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
     return {
         "case": {**case, "mu": cert.mu, "condition": cert.condition},
         "certified": bool(cert.certified),
-        "kind": "strict reading, sound rule, quadratic function about the trim's steady motion: a numerical "
-                "certificate where certified",
+        "kind": f"strict reading, sound rule, {_FUNCTION_NAMES[cert.function]} about the trim's steady "
+                "motion: a numerical certificate where certified",
+        "function": cert.function,
+        "candidates": [{"function": k.function, "certified": bool(k.certified), "bound": _sig(k.bound),
+                        "start_region": _sig(k.start_region)} for k in cert.candidates],
         "bound": _sig(cert.bound),
         "start_region": _sig(cert.start_region),
         "start_region_per_hinge": _per_hinge(cert.start_region, cert.scales, omega),
@@ -515,12 +530,16 @@ def _certify(args) -> int:
 
     from .analysis.certify import certify
 
+    function = "quadratic" if args.verify and args.function == "auto" else args.function
+    if args.verify and function != "quadratic":
+        raise ValueError(f"--verify proves the quadratic function only; --function {function} gives a "
+                         "numerical certificate (drop --verify, or use --function quadratic)")
     params, case = _blade(args.params, args.cg)
     scales = None if args.scales is None else np.radians(args.scales)
     print(f"certifying: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.condition} ...",
           file=sys.stderr, flush=True)
-    cert = certify(params, args.mu, condition=args.condition, A=args.A, scales=scales, n_psi=args.n_psi,
-                   n_sphere=args.n_sphere, verify=args.verify)
+    cert = certify(params, args.mu, condition=args.condition, function=function, A=args.A, scales=scales,
+                   n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify)
     _dump(certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere))
     return 0
 
@@ -581,7 +600,7 @@ def _sweep(args) -> int:
         where = f"{min(args.workers or available_cores(), n)} processes"
     print(f"sweeping: {case['params']}, {n} point{'s' if n != 1 else ''} on {where} ...", file=sys.stderr, flush=True)
     result = sweep(params, grid, n_psi=args.n_psi, workers=args.workers, scheduler=args.scheduler,
-                   progress=progress_bar(sys.stderr), n_sphere=args.n_sphere)
+                   function=args.function, progress=progress_bar(sys.stderr), n_sphere=args.n_sphere)
     args.out.parent.mkdir(parents=True, exist_ok=True)
     path = result.write(args.out)
     errors = sum(1 for e in result.column("error") if e)

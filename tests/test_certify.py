@@ -15,7 +15,7 @@ from rotorlyap.model.steady import disturbed_rhs
 
 @pytest.fixture(scope="module")
 def hover_certificate():
-    return certify(BladeParameters.flight_case("forward"), 0.0)
+    return certify(BladeParameters.flight_case("forward"), 0.0, function="quadratic")
 
 
 def test_the_forward_cg_hover_is_certified_and_read_per_hinge(hover_certificate):
@@ -24,6 +24,7 @@ def test_the_forward_cg_hover_is_certified_and_read_per_hinge(hover_certificate)
     second (rad/rad of azimuth times Omega rad/s)."""
     c = hover_certificate
     assert c.certified and "numerical certificate" in c.message
+    assert c.function == "quadratic" and [k.function for k in c.candidates] == ["quadratic"]
     assert 0.0 < c.start_region < c.bound <= 1.0
     omega = c.trim.params.rotor_speed
     flap_deg, flap_rate = c.start_region_per_hinge["flap"]
@@ -58,3 +59,10 @@ def test_an_unstable_blade_is_not_certified_and_says_why():
 def test_certify_refuses_an_unknown_condition():
     with pytest.raises(ValueError, match="condition must be one of"):
         certify(BladeParameters.flight_case("forward"), 0.1, condition="cruise")
+
+
+def test_certify_refuses_an_unknown_function_and_a_proof_of_a_designed_one():
+    with pytest.raises(ValueError, match="function must be one of"):
+        certify(BladeParameters.table_i("forward"), 0.0, function="cubic")
+    with pytest.raises(ValueError, match="verify=True proves the quadratic function only"):
+        certify(BladeParameters.table_i("forward"), 0.0, function="energy", verify=True)

@@ -137,10 +137,14 @@ def test_a_file_that_leaves_blade_fields_to_the_template_warns_on_stderr(capsys,
 def test_certify_prints_the_certificate_per_hinge(capsys):
     """certify prints certified, the bound and start region (scaled norm) and per hinge in deg and
     deg/s (a_i r and a_(i+3) r Omega), the growth rate, the trim in degrees and C_T/sigma, with 4
-    significant digits, and the message's 'numerical certificate'."""
-    assert main(["certify", "--mu", "0", "--n-psi", "4", "--n-sphere", "16"]) == 0
+    significant digits, and the message's 'numerical certificate'; the function it rests on and
+    every candidate tried."""
+    assert main(["certify", "--mu", "0", "--n-psi", "4", "--n-sphere", "16", "--function", "quadratic"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["certified"] is True and "numerical certificate" in data["message"]
+    assert data["function"] == "quadratic" and "quadratic function" in data["kind"]
+    assert [c["function"] for c in data["candidates"]] == ["quadratic"]
+    assert data["candidates"][0]["start_region"] == data["start_region"]
     assert data["case"] == {"params": "Table I", "cg": "forward", "cg_position": 0.215, "mu": 0.0,
                             "condition": "propulsive"}
     assert 0.0 < data["start_region"] < data["bound"] <= 1.0
@@ -154,6 +158,14 @@ def test_certify_prints_the_certificate_per_hinge(capsys):
     numbers = [data["bound"], data["start_region"], data["growth_rate_per_rev"], *trim.values(),
                *(v for h in data["start_region_per_hinge"].values() for v in h.values())]
     assert all(significant_digits_at_most(v) for v in numbers)
+
+
+def test_certify_refuses_to_prove_a_designed_function(capsys):
+    """--verify proves the quadratic function only: with --function energy the command says so
+    and exits 1 before any work."""
+    assert main(["certify", "--function", "energy", "--verify"]) == 1
+    err = capsys.readouterr().err
+    assert "--verify proves the quadratic function only" in err and "certifying" not in err
 
 
 def test_certify_verify_adds_the_proof(capsys):

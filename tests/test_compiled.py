@@ -77,8 +77,9 @@ def test_potential_terms_equal_numpy_path(kernel_pair):
 
 @pytest.mark.parametrize("steady", ["hover", "cyclic", "periodic"])
 def test_energy_rate_equals_numpy_path(kernel_pair, steady):
-    """W' of the energy function agrees with the numpy path: about the hover equilibrium, about a
-    constant state with cyclic pitch (psi-dependent control), and about a periodic motion."""
+    """W and W' of the energy function (each its own compiled kernel) agree with the numpy path:
+    about the hover equilibrium, about a constant state with cyclic pitch (psi-dependent
+    control), and about a periodic motion."""
     params = BladeParameters.table_i("forward")
     if steady == "cyclic":
         params = replace(params, cyclic_cos=0.02, cyclic_sin=-0.04, collective=0.15)

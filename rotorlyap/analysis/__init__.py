@@ -2,6 +2,10 @@
 
 * :mod:`~rotorlyap.analysis.functions`: the paper's energy function and quadratic functions
   from the periodic Lyapunov equation;
+* :mod:`~rotorlyap.analysis.nonlinear_functions`: :func:`designed_function`, the augmented
+  energy (and a polynomial family) designed on sampled states for the nonlinear range;
+* :mod:`~rotorlyap.analysis.region`: :func:`stable_region`, the region of stable motion found by
+  simulation, the yardstick of every certificate;
 * :mod:`~rotorlyap.analysis.stability`: :func:`blade_stability`, the blade in the engine, in the
   strict and the practical reading;
 * :mod:`~rotorlyap.analysis.floquet`: Floquet multipliers of the blade about its steady motion,
@@ -17,9 +21,12 @@
 from .certify import Certificate, certify
 from .floquet import blade_floquet, floquet_sweep
 from .functions import energy_function, optimised_quadratic_function, quadratic_function
+from .nonlinear_functions import designed_function
 from .proof import prove_blade
+from .region import StableRegion, stable_region
 from .stability import blade_stability
 from .sweep import SweepResult, sweep
 
-__all__ = ["Certificate", "SweepResult", "blade_floquet", "blade_stability", "certify", "energy_function",
-           "floquet_sweep", "optimised_quadratic_function", "prove_blade", "quadratic_function", "sweep"]
+__all__ = ["Certificate", "StableRegion", "SweepResult", "blade_floquet", "blade_stability", "certify",
+           "designed_function", "energy_function", "floquet_sweep", "optimised_quadratic_function", "prove_blade",
+           "quadratic_function", "stable_region", "sweep"]

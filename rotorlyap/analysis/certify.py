@@ -3,12 +3,20 @@
 :func:`certify` is the path that chapters 7 and 8 show to certify technical stability where the
 paper's energy cannot: the blade trimmed (in forward flight the helicopter, by
 :func:`rotorlyap.model.forward_trim.forward_flight_trim`), its own steady motion (the trimmed
-hover state, or the periodic motion), the quadratic Liapunov function of the linearised blade
-about it (:func:`rotorlyap.analysis.functions.quadratic_function`), and the strict reading with
+hover state, or the periodic motion), a Liapunov function about it, and the strict reading with
 the sound rule (the theorem's (h) over the whole period) in
 :func:`rotorlyap.analysis.stability.blade_stability`. The result reads as an engineer would:
 which disturbances, per hinge in degrees and degrees per second, are guaranteed to keep the
 motion within which bound.
+
+The function (``function=``): ``"quadratic"``, the quadratic form of the linearised blade
+(:func:`rotorlyap.analysis.functions.quadratic_function`: seconds, the linear range);
+``"energy"`` or ``"polynomial"``, a function designed for the nonlinear range
+(:func:`rotorlyap.analysis.nonlinear_functions.designed_function`: the augmented energy, or a
+polynomial; a minute or more); ``"auto"`` (the default), the quadratic function and the
+augmented energy both, and the certificate with the larger start region, so that a user gets
+the largest certificate without choosing (where the linearised blade is unstable only the
+quadratic function is tried: it says why nothing can be certified).
 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
 message says so. With ``verify=True`` the same function is also *proved* by ball arithmetic
@@ -37,10 +45,25 @@ from ..methods.proof import Proof
 from ..model.steady import refine_motion, tabulate_motion
 from .floquet import blade_floquet
 from .functions import quadratic_function
+from .nonlinear_functions import FAMILIES, designed_function
 from .proof import prove_blade
 from .stability import blade_stability
 
-__all__ = ["Certificate", "certify"]
+__all__ = ["FUNCTIONS", "Candidate", "Certificate", "certify"]
+
+FUNCTIONS = ("auto", "quadratic") + FAMILIES
+"""The ``function`` choices of :func:`certify` (module docstring)."""
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """One function :func:`certify` tried: its family, verdict, bound and start radius (scaled norm)."""
+
+    function: str
+    certified: bool
+    bound: float
+    start_region: float
+    message: str
 
 
 @dataclass(frozen=True)
@@ -75,6 +98,14 @@ class Certificate:
     proof : Proof or None
         ``verify=True``: the proved certificate (bound, level, start radii per azimuth interval,
         or why nothing was proved); None otherwise, and where no quadratic function exists.
+    function : str
+        The family of the function the certificate rests on (``"quadratic"``, ``"energy"`` or
+        ``"polynomial"``).
+    candidates : tuple of Candidate
+        Every function tried, in order (one unless ``function="auto"``).
+    lyapunov : object or None
+        The function itself (``W``, ``dW``, ``f``), for a falsifier or a figure; None where none
+        was built.
     """
 
     certified: bool
@@ -88,6 +119,9 @@ class Certificate:
     result: TechnicalStabilityResult | None
     message: str
     proof: Proof | None = None
+    function: str = "quadratic"
+    candidates: tuple = ()
+    lyapunov: object | None = None
 
     def _per_hinge(self, radius: float) -> dict:
         omega = self.trim.params.rotor_speed
@@ -107,7 +141,9 @@ class Certificate:
 
     def summary(self) -> str:
         """Three lines: the verdict, the start region and the bound per hinge (0.01 deg, 0.1 deg/s)."""
-        head = (f"mu = {self.mu:g}, {self.condition}: {'certified' if self.certified else 'not certified'}"
+        by = {"quadratic": "", "energy": " by the augmented energy",
+              "polynomial": " by the polynomial function"}[self.function]
+        head = (f"mu = {self.mu:g}, {self.condition}: {'certified' + by if self.certified else 'not certified'}"
                 f" (largest Floquet real part {self.growth_rate:.3f} per rev)")
         if not self.certified:
             return head + "\n  " + self.message
@@ -123,8 +159,9 @@ class Certificate:
         return "\n".join(lines)
 
 
-def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", A: float | None = None,
-            scales=None, n_psi: int = 36, Q=None, verify: bool = False, **engine_options) -> Certificate:
+def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", function: str = "auto",
+            A: float | None = None, scales=None, n_psi: int = 36, Q=None, verify: bool = False,
+            **engine_options) -> Certificate:
     """Certify technical stability of the blade's trimmed steady motion at ``mu``.
 
     Parameters
@@ -138,9 +175,13 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         One of :data:`rotorlyap.model.forward_trim.TRIM_TARGETS`: the trimmed helicopter
         (default), the hover collective with cyclic for zero flapping, or the paper's hover
         controls.
+    function : str
+        One of :data:`FUNCTIONS` (module docstring): ``"auto"`` (default) tries the quadratic
+        function and the augmented energy and keeps the larger start region.
     A : float, optional
-        Requested bound of the scaled norm (default :data:`rotorlyap.conventions.DEFAULT_A`); the
-        sound rule reduces it until it holds.
+        Requested bound of the scaled norm of the quadratic function (default
+        :data:`rotorlyap.conventions.DEFAULT_A`); the sound rule reduces it until it holds. A
+        designed function asks for the bound it was designed for.
     scales : array_like, optional
         Norm scales ``a_i``, rad and rad/rad (default :data:`rotorlyap.conventions.DEFAULT_SCALES`).
     n_psi : int
@@ -150,7 +191,8 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     verify : bool
         Also prove the certificate by ball arithmetic (:func:`rotorlyap.analysis.proof.prove_blade`,
         up to the numerical bound; seconds in hover, minutes in forward flight); in forward flight
-        the periodic motion is first refined by shooting (module docstring).
+        the periodic motion is first refined by shooting (module docstring). The prover handles
+        the quadratic function: with ``verify=True``, ``"auto"`` means ``"quadratic"``.
     **engine_options
         Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ...).
 
@@ -161,12 +203,18 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     Raises
     ------
     ValueError
-        Unknown ``condition``, bad ``mu`` (from the trim).
+        Unknown ``condition`` or ``function``, ``verify=True`` with a designed family, bad ``mu``
+        (from the trim).
     rotorlyap.errors.TrimError
         If the trim does not converge.
     """
     if condition not in TRIM_TARGETS:
         raise ValueError(f"condition must be one of {TRIM_TARGETS}, got {condition!r}")
+    if function not in FUNCTIONS:
+        raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
+    if verify and function in FAMILIES:
+        raise ValueError(f"verify=True proves the quadratic function only; function={function!r} "
+                         "gives a numerical certificate (use verify=False, or function='quadratic')")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
     if mu == 0.0:
@@ -177,28 +225,58 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         steady = tabulate_motion(trim.motion)
     growth = float(blade_floquet(trim.params, mu, steady=trim.steady).exponents.real.max())
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
-    A = DEFAULT_A if A is None else float(A)
-    functions = []  # the function the engine works with, kept for the proof
+    A_quadratic = DEFAULT_A if A is None else float(A)
+    if function == "auto":
+        families = ("quadratic",) if verify or growth >= 0.0 else ("quadratic", "energy")
+    else:
+        families = (function,)
 
-    def keep(blade, st):
-        functions.append(quadratic_function(blade, st, Q, scales=a))
-        return functions[-1]
+    def one(family):
+        """(TechnicalStabilityResult or None, the function or None, message)"""
+        functions = []  # the function the engine works with, kept for the proof and the caller
 
-    try:
-        res = blade_stability(trim.params, mu, lyapunov=keep, steady=steady, A=A, scales=a, n_psi=n_psi,
-                              **engine_options)
-    except NotAsymptoticallyStableError as exc:
-        return Certificate(certified=False, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=0.0,
-                           start_region=0.0, scales=a, result=None,
-                           message=f"the linearised blade is unstable (largest Floquet real part {growth:.3f} "
-                                   f"per rev): no quadratic function exists, nothing can be certified ({exc})")
-    ok = bool(np.all(res.stable))
-    lam = float(np.min(res.lambda0)) if ok else 0.0
-    bound = float(res.A) if ok else 0.0
-    if not math.isfinite(lam):
-        lam = 0.0
+        def keep(blade, st):
+            if family == "quadratic":
+                functions.append(quadratic_function(blade, st, Q, scales=a))
+            else:
+                functions.append(designed_function(blade, st, family, scales=a))
+                if not functions[-1].designed:
+                    raise _NotDesigned(functions[-1])
+            return functions[-1]
+
+        try:
+            res = blade_stability(trim.params, mu, lyapunov=keep, steady=steady,
+                                  A=A_quadratic if family == "quadratic" else None, scales=a, n_psi=n_psi,
+                                  **engine_options)
+        except NotAsymptoticallyStableError as exc:
+            return None, None, (f"the linearised blade is unstable (largest Floquet real part {growth:.3f} "
+                                f"per rev): no quadratic function exists, nothing can be certified ({exc})")
+        except _NotDesigned as exc:
+            return None, exc.function, (f"the {exc.function.label} design found no function that decreases "
+                                        f"on a shell about the steady motion ({exc.function.design!r})")
+        return res, functions[-1], res.message
+
+    tried = []
+    for family in families:
+        res, fun, message = one(family)
+        ok = res is not None and bool(np.all(res.stable))
+        lam = float(np.min(res.lambda0)) if ok else 0.0
+        lam = lam if math.isfinite(lam) else 0.0
+        tried.append((family, res, fun, Candidate(family, ok, float(res.A) if ok else 0.0, lam, message)))
+    best = max(tried, key=lambda item: (item[3].certified, item[3].start_region))
+    family, res, fun, cand = best
     proof = None
-    if verify:
-        proof = prove_blade(functions[-1], bound if ok else A)
-    return Certificate(certified=ok, mu=mu, condition=condition, trim=trim, growth_rate=growth, bound=bound,
-                       start_region=lam, scales=a, result=res, message=res.message, proof=proof)
+    if verify and fun is not None:
+        proof = prove_blade(fun, cand.bound if cand.certified else A_quadratic)
+    return Certificate(certified=cand.certified, mu=mu, condition=condition, trim=trim, growth_rate=growth,
+                       bound=cand.bound, start_region=cand.start_region, scales=a, result=res,
+                       message=cand.message, proof=proof, function=family,
+                       candidates=tuple(item[3] for item in tried), lyapunov=fun)
+
+
+class _NotDesigned(Exception):
+    """A designed family found no function (carried to :func:`certify`)."""
+
+    def __init__(self, function):
+        super().__init__(function.label)
+        self.function = function

@@ -227,6 +227,10 @@ class EnergyFunction:
     def W(self, psi: ArrayLike, x: ArrayLike) -> FloatArray:
         """Liapunov function ``W(psi, x)``, J, shape ``x.shape[:-1]`` (broadcast with psi)."""
         b = self.blade
+        if b.kernel is not None:
+            pf, xf, shape = flatten_states(psi, x)
+            xi, ps = self._steady_rows(pf)
+            return compiled.energy_value(b, b.kernel, pf, xf, xi, ps).reshape(shape)
 
         def kernel(psi_b, xc):
             xi, _, ps = self._steady_block(psi_b)
@@ -246,15 +250,23 @@ class EnergyFunction:
         if b.kernel is None:
             return b.blocks(psi, x, self._dw_block, 1)[..., 0]
         pf, xf, shape = flatten_states(psi, x)
+        xi, ps, dxi = self._steady_rows(pf, rates=True)
+        return compiled.energy_rate(b, b.kernel, pf, xf, xi, dxi, ps, self.steady.is_constant).reshape(shape)
+
+    def _steady_rows(self, pf: FloatArray, rates: bool = False):
+        """``xi``, the potential terms at its hinge angles and (``rates``) ``xi'``, one row for a
+        constant steady motion without cyclic pitch, else one row per azimuth of ``pf`` (each
+        distinct azimuth computed once: searches repeat each)."""
+        b = self.blade
         constant = self.steady.is_constant
         if constant and not b.has_cyclic:
             xi, dxi, ps = self.steady.state[None], np.zeros((1, 6)), self._steady_block(pf[:1])[2].T
-        else:  # xi, xi' and the potential terms once per distinct azimuth (searches repeat each)
+        else:
             pu, inverse = np.unique(pf, return_inverse=True)
             xi_u, dxi_u = (np.broadcast_to(a, (pu.size, 6)) for a in self.steady_at(pu))
             ps = b.potential_terms(pu, np.ascontiguousarray(xi_u[:, :3].T)).T[inverse]
             xi, dxi = (xi_u[:1], dxi_u[:1]) if constant else (xi_u[inverse], dxi_u[inverse])
-        return compiled.energy_rate(b, b.kernel, pf, xf, xi, dxi, ps, constant).reshape(shape)
+        return (xi, ps, dxi) if rates else (xi, ps)
 
     def _dw_block(self, psi: FloatArray, xc: FloatArray) -> FloatArray:
         """W' for one block of disturbed states ``xc`` (6, n)."""

@@ -57,7 +57,10 @@ def blade_stability(
         for example :func:`~rotorlyap.analysis.functions.quadratic_function`. Default: the
         paper's energy function, :func:`~rotorlyap.analysis.functions.energy_function`.
     A : float, optional
-        Requested bound of the scaled norm; default :data:`rotorlyap.conventions.DEFAULT_A`.
+        Requested bound of the scaled norm; default :data:`rotorlyap.conventions.DEFAULT_A`, or
+        for a designed function (an object with ``design`` and ``engine_options()``, such as
+        :class:`~rotorlyap.analysis.nonlinear_functions.DesignedFunction`) the bound it was
+        designed for, with the engine options it was designed for.
     scales : array_like, optional
         Norm scales ``a_i`` (rad, rad/rad); default :data:`rotorlyap.conventions.DEFAULT_SCALES`.
     n_psi : int
@@ -112,6 +115,12 @@ def blade_stability(
     if rule == "sound" and isinstance(fun, QuadraticFunction):
         # W = x^T P x: its extrema on the engine's spheres in closed form
         engine_options.setdefault("w_matrix", lambda psi: a[:, None] * fun.P(psi) * a[None, :])
+    designed = getattr(fun, "design", None)
+    if designed is not None and test_disturbances is None:
+        for key, value in fun.engine_options().items():
+            engine_options.setdefault(key, value)
+        if A is None:
+            A = designed.A
     return technical_stability(
         f, fun.W, DEFAULT_A if A is None else A, scales=a,
         n_psi=n_psi, dW=fun.dW, test_directions=test_disturbances, **engine_options,

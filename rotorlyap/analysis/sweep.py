@@ -57,7 +57,7 @@ from ..conventions import HINGES, MAX_ADVANCE_RATIO
 from ..errors import ConvergenceError, TemplateValuesWarning
 from ..model.forward_trim import TRIM_TARGETS
 from ..model.parameters import CG_POSITIONS, BladeParameters
-from .certify import Certificate, certify
+from .certify import FUNCTIONS, Certificate, certify
 
 __all__ = ["DASK_INSTALL", "GRID_SETTINGS", "RESULT_COLUMNS", "WORKER_ENVIRONMENT", "SweepResult", "available_cores",
            "evaluate_point", "grid_names", "grid_value_type", "sweep", "sweep_fields"]
@@ -508,9 +508,15 @@ def _no_progress(done: int, total: int) -> None:
     pass
 
 
+def _check_function(function: str) -> str:
+    if function not in FUNCTIONS:
+        raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
+    return function
+
+
 def sweep(params: BladeParameters, grid: Mapping[str, Sequence[Any] | Any], *, n_psi: int = 36,
           condition: str = "propulsive", mu: float = 0.0, A: float | None = None, scales=None,
-          workers: int | None = None, scheduler: str | None = None,
+          function: str = "quadratic", workers: int | None = None, scheduler: str | None = None,
           progress: Callable[[int, int], None] | None = None, **engine_options) -> SweepResult:
     """Certify technical stability at every point of a grid (full factorial), one table.
 
@@ -536,6 +542,10 @@ def sweep(params: BladeParameters, grid: Mapping[str, Sequence[Any] | Any], *, n
         :data:`rotorlyap.conventions.DEFAULT_A`).
     scales : array_like, optional
         Norm scales ``a_i``, rad and rad/rad (default :data:`rotorlyap.conventions.DEFAULT_SCALES`).
+    function : str
+        The Liapunov function of every point (:data:`rotorlyap.analysis.certify.FUNCTIONS`).
+        Default ``"quadratic"``, seconds a point, where :func:`~rotorlyap.analysis.certify.certify`
+        defaults to ``"auto"`` (a minute or more a point, for the largest certificate).
     workers : int, optional
         Processes (or Dask workers of a local cluster); default every core (:func:`available_cores`);
         1 runs in this process.
@@ -574,7 +584,7 @@ def sweep(params: BladeParameters, grid: Mapping[str, Sequence[Any] | Any], *, n
                 "condition": _check_value(params, "condition", condition, "condition"),
                 "A": None if A is None else _check_value(params, "A", A, "A"),
                 "scales": None if scales is None else np.asarray(scales, dtype=float),
-                "n_psi": n_psi, "engine_options": dict(engine_options)}
+                "n_psi": n_psi, "engine_options": dict(engine_options, function=_check_function(function))}
     axes = _normalised_grid(params, grid)
     points = [tuple(zip(axes, values)) for values in itertools.product(*axes.values())]
     tasks = [(params, point, settings) for point in points]

@@ -6,6 +6,10 @@
 * :mod:`~rotorlyap.methods.simulation`: many motions integrated at once;
 * :mod:`~rotorlyap.methods.floquet`: Floquet multipliers of linear periodic systems;
 * :mod:`~rotorlyap.methods.periodic_lyapunov`: the periodic Lyapunov equation;
+* :mod:`~rotorlyap.methods.scenario`: Liapunov functions designed by linear programming on
+  sampled states (scenario design with counterexample rounds);
+* :mod:`~rotorlyap.methods.region`: the region of stable motion by batched simulation (ray
+  extents and slices);
 * :mod:`~rotorlyap.methods.validation`: certificates measured against simulated motions;
 * :mod:`~rotorlyap.methods.intervals`: ball arithmetic (Arb) with derivatives, rigorous
   eigenvalue bounds;

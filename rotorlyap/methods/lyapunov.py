@@ -257,6 +257,8 @@ def technical_stability(
     rule: str | None = None,
     w_matrix: Callable[[np.ndarray], np.ndarray] | None = None,
     margin: float = 1e-6,
+    autonomous: bool = False,
+    band: str = "level",
 ) -> TechnicalStabilityResult:
     """Certify bounded motion of ``x' = f(psi, x)`` with the Liapunov function ``W``.
 
@@ -330,6 +332,25 @@ def technical_stability(
         ``rule="sound"``: certify only where the largest ``W'`` found on the band is below
         ``-margin`` times the largest ``|W|`` on the sphere ``||x|| = A`` (per unit azimuth), a
         relative margin against the search missing the true maximum by a little.
+    autonomous : bool
+        Only with ``rule="sound"``: ``f`` and ``W`` do not depend on ``psi`` (an autonomous
+        system, such as the blade in hover about its equilibrium, and a function without
+        azimuth). The searches then keep the azimuth at 0 instead of moving it over the period,
+        and every azimuth of the grid gets the same start radius: the same theorem, searched
+        in one azimuth instead of ``n_psi``. The caller vouches that nothing depends on ``psi``.
+    band : {"level", "shell"}
+        Only with ``rule="sound"``: where (h) is searched. ``"level"``: the band ``||x|| <= A,
+        W >= c`` itself, ray by ray from the level set (closed form for a quadratic ``W``, a
+        root search along each ray otherwise). ``"shell"``: the shell ``rho <= ||x|| <= A``, with
+        ``rho`` the largest radius whose ball lies in ``{W < c}`` at every azimuth of the period
+        (a search of ``sup W`` on spheres, the azimuth free): it contains the band, so (h) there
+        implies (h) on the band; it asks more of ``W'`` (also on the states of the shell inside
+        the level set) and costs many times less where ``W`` has no closed form. For functions
+        designed to decrease on a shell (:mod:`rotorlyap.methods.scenario`), whose ``W`` has
+        several local extrema on a sphere: the searches of ``W`` (the level ``alpha``, the start
+        radii and ``rho``) then refine 64 of the best samples for 200 iterations, not
+        ``n_refine`` for ``n_iter``, the 32 best minima on the sphere are polished by L-BFGS-B,
+        and the level is set :data:`SHELL_LEVEL_MARGIN` below the smallest ``W`` found.
     test_directions : array_like, optional
         Shape ``(k, n)``: the *practical reading*. Spheres are represented only by the states
         ``rho * a * d / |d|`` for these directions ``d`` (in scaled coordinates), at the grid
@@ -394,6 +415,12 @@ def technical_stability(
     margin = float(margin)
     if not (np.isfinite(margin) and margin >= 0):
         raise ValueError(f"margin must be finite and >= 0, got {margin!r}")
+    if autonomous and rule != "sound":
+        raise ValueError("autonomous=True is an option of rule='sound' only")
+    if band not in ("level", "shell"):
+        raise ValueError(f"band must be 'level' or 'shell', got {band!r}")
+    if band == "shell" and rule != "sound":
+        raise ValueError("band='shell' is an option of rule='sound' only")
     if rule == "sound" and test_directions is not None:
         raise ValueError("rule='sound' searches whole spheres; the practical reading "
                          "(test_directions) is the paper's rule only")
@@ -422,7 +449,8 @@ def technical_stability(
     sys.w(psi[:1], x0)
     if rule == "sound":
         return _sound(sys, w_matrix, A, psi, period, scales, dirs, common, n_radii=n_radii,
-                      n_shells=n_shells, n_bisect=n_bisect, rtol=rtol, margin=margin)
+                      n_shells=n_shells, n_bisect=n_bisect, rtol=rtol, margin=margin,
+                      autonomous=bool(autonomous), shell=band == "shell")
 
     # round-off allowance from the size of W on the requested sphere
     w_scale = sphere_extremum(
@@ -498,6 +526,37 @@ def _start_radii(sys, psi, A_used, level, scales, dirs, common, n_radii, n_bisec
         lo = np.where(todo & below, mid, lo)
         hi = np.where(todo & ~below, mid, hi)
     return np.where(todo, lo, A_used)
+
+
+#: With ``band="shell"`` the level is set this fraction below the smallest ``W`` the search found
+#: on the sphere ``A`` (a ``W`` without closed form: a search misses its minimum by a little).
+SHELL_LEVEL_MARGIN = 1e-3
+
+
+def _inner_radius(sys, psi, A, level, scales, dirs, common, n_radii, n_bisect, free) -> float:
+    """The largest radius (at most ``A``) whose ball lies in ``{W(psi, .) < level}`` at every
+    azimuth of the period: :func:`_start_radii` with the azimuth free in the searches (a scan of
+    ``n_radii`` spheres, then ``n_bisect`` bisection steps), less 0.1 % for the search's error."""
+    def top(radius):
+        return float(sphere_extremum(sys.w, psi, radius, scales, dirs, per_psi=False, free_psi=free,
+                                     **common).value[0])
+
+    radii = A * np.arange(1, n_radii + 1) / n_radii
+    lo, hi = 0.0, None
+    for radius in radii:
+        if top(radius) >= level:
+            hi = radius
+            break
+        lo = radius
+    if hi is None:
+        return A
+    for _ in range(n_bisect):
+        mid = 0.5 * (lo + hi)
+        if top(mid) < level:
+            lo = mid
+        else:
+            hi = mid
+    return 0.999 * lo
 
 
 def _step3(sys, A, psi, scales, dirs, free, common, tol, n_radii, n_bisect, *, A_max=None):
@@ -597,15 +656,38 @@ def _ray_level(sys, psi: np.ndarray, u: np.ndarray, scales: np.ndarray, c: float
     hi = np.where(first < n_scan, radii[np.minimum(first, n_scan - 1)], A)
     lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
     todo = first < n_scan
+    # the bracket [lo, hi] (W < c at lo, W >= c at hi) narrowed by the Illinois variant of
+    # regula falsi: superlinear for a smooth W, never leaving the bracket, and a bisection step
+    # wherever an end has stayed put twice (so at most as slow as bisection)
+    flat = w.reshape(m, n_scan)
+    w_hi = np.where(todo, flat[np.arange(m), np.minimum(first, n_scan - 1)] - c, 0.0)
+    w_lo = flat[np.arange(m), np.maximum(first - 1, 0)] - c
+    at_0 = todo & (first == 0)
+    if at_0.any():
+        w_lo[at_0] = sys.w(psi[at_0], np.zeros((int(at_0.sum()), u.shape[1]))) - c
+    stale = np.zeros(m, dtype=int)  # +k: lo kept k times in a row, -k: hi kept
+    tol = 1e-13 * A
     for _ in range(n_bisect):
+        todo &= hi - lo > tol
         if not todo.any():
             break
-        mid = 0.5 * (lo + hi)
-        wm = sys.w(psi[todo], (u[todo] * mid[todo, None]) * scales)
-        up = np.zeros(m, dtype=bool)
-        up[todo] = wm >= c
-        hi = np.where(todo & up, mid, hi)
-        lo = np.where(todo & ~up, mid, lo)
+        idx = np.flatnonzero(todo)
+        a_, b_, fa, fb = lo[idx], hi[idx], w_lo[idx], w_hi[idx]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            fa_w = np.where(stale[idx] >= 2, 0.5 * fa, fa)   # Illinois: halve the stale end's value
+            fb_w = np.where(stale[idx] <= -2, 0.5 * fb, fb)
+            x = (a_ * fb_w - b_ * fa_w) / (fb_w - fa_w)
+        bad = ~np.isfinite(x) | (x <= a_) | (x >= b_) | (np.abs(stale[idx]) >= 4)
+        x = np.where(bad, 0.5 * (a_ + b_), x)
+        wx = sys.w(psi[idx], (u[idx] * x[:, None]) * scales) - c
+        up = wx >= 0
+        hi[idx] = np.where(up, x, b_)
+        w_hi[idx] = np.where(up, wx, fb)
+        lo[idx] = np.where(up, a_, x)
+        w_lo[idx] = np.where(up, fa, wx)
+        st = stale[idx]
+        stale[idx] = np.where(up, np.where(st > 0, st + 1, 1), np.where(st < 0, st - 1, -1))
+        stale[idx] = np.where(bad, 0, stale[idx])
     return hi
 
 
@@ -614,7 +696,7 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
                 n_sphere: int = 1024, n_levels: int = 5, n_refine: int = 4, n_iter: int = 40,
                 seed: int = 0, stop_above: float | None = None, fd_step: float = 1e-4,
                 directions=None, n_polish: int = 256, n_sweep: int = 1024, starts: str = "levels",
-                n_lbfgs: int = 64):
+                n_lbfgs: int = 64, autonomous: bool = False, inner: float | None = None):
     """Largest ``W'`` on the band ``||x|| <= A, W(psi, x) >= c`` (condition (h) of the theorem).
 
     The band is searched ray by ray: along each direction ``u`` (scaled coordinates) at each
@@ -672,6 +754,13 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         for 256 points; 1024 azimuths put eight points on each ripple), and a local ascent
         started at a grid azimuth stops on the nearest ripple; an independent search found
         ``W' > 0`` on bands that the polish alone called negative. 0 switches the sweep off.
+    autonomous : bool
+        ``f`` and ``W`` do not depend on ``psi``: the azimuth stays fixed (no free azimuth in the
+        local searches, no sweep).
+    inner : float, optional
+        Search the shell ``inner <= ||x|| <= A`` instead of the band: a superset of the band
+        when the ball of radius ``inner`` lies in ``{W < c}`` at every azimuth (no level to find
+        along each ray, so many times cheaper for a ``W`` without closed forms).
 
     Returns
     -------
@@ -687,7 +776,7 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     def state(p, y):
         t = np.linalg.norm(y, axis=1)
         u = y / np.maximum(t, 1e-300)[:, None]
-        rc = _ray_level(sys, p, u, scales, c, A, w_matrix)
+        rc = np.full(t.size, float(inner)) if inner is not None else _ray_level(sys, p, u, scales, c, A, w_matrix)
         r = rc + np.clip(t, 0.0, 1.0) * (A - rc)
         return (u * r[:, None]) * scales
 
@@ -714,7 +803,7 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         parts = []
         for opts in searches:
             radius = opts.pop("radius")
-            e = sphere_extremum(g, psi, radius, np.ones(n), dirs, per_psi=False, free_psi=True,
+            e = sphere_extremum(g, psi, radius, np.ones(n), dirs, per_psi=False, free_psi=not autonomous,
                                 period=period, n_refine=max(n_refine, opts["keep"]), n_iter=n_iter,
                                 stop_above=stop_above, **opts)
             if stop_above is not None and e.value[0] > stop_above:
@@ -725,10 +814,10 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     if not per_psi and ext.value.size > n_lbfgs:  # the batched ascent refined them all;
         top = np.argsort(-ext.value)[:n_lbfgs]    # quasi-Newton for the best of those
         ext = Extremum(ext.value[top], ext.psi[top], ext.x[top])
-    value, p_best, y_best = _polish(g, ext, free_psi=not per_psi)
+    value, p_best, y_best = _polish(g, ext, free_psi=not (per_psi or autonomous))
     if per_psi:
         return Extremum(value, p_best, state(p_best, y_best))
-    if n_sweep > 0:
+    if n_sweep > 0 and not autonomous:
         value, p_best, y_best = _sweep_azimuth(g, value, p_best, y_best, period, int(n_sweep))
     i = int(np.argmax(value))
     return Extremum(value[i:i + 1], p_best[i:i + 1], state(p_best[i:i + 1], y_best[i:i + 1]))
@@ -786,9 +875,11 @@ def _polish(fun: Function, start, *, free_psi: bool, maxiter: int = 100):
 
         def unpack(Z):
             v = Z[:, :n]
-            u = v / np.linalg.norm(v, axis=1, keepdims=True)
-            t = np.clip(Z[:, n], T_MIN, 1.0)  # t > 0: y = t u keeps its direction
-            p = Z[:, n + 1] if free_psi else np.full(Z.shape[0], psis[i])
+            nv = np.linalg.norm(v, axis=1, keepdims=True)
+            ok = np.isfinite(nv) & (nv > 0)  # a step to a zero or overflowing v: the start direction
+            u = np.where(ok, v / np.where(ok, nv, 1.0), z0[None, :n])
+            t = np.clip(np.nan_to_num(Z[:, n], nan=t0), T_MIN, 1.0)  # t > 0: y = t u keeps its direction
+            p = np.nan_to_num(Z[:, n + 1], nan=psis[i]) if free_psi else np.full(Z.shape[0], psis[i])
             return p, u * t[:, None]
 
         def fg(z):
@@ -806,20 +897,43 @@ def _polish(fun: Function, start, *, free_psi: bool, maxiter: int = 100):
 
 
 def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_shells, n_bisect,
-           rtol, margin) -> TechnicalStabilityResult:
+           rtol, margin, autonomous=False, shell=False) -> TechnicalStabilityResult:
     """:func:`technical_stability` with ``rule="sound"``."""
     n_psi = psi.size
     n = scales.size
+    psi_grid = psi
+    free = not autonomous
+    if autonomous:  # one azimuth stands for all (the results are spread over the grid at the end)
+        psi = psi[:1]
+
+    def spread(v):
+        v = np.asarray(v)
+        return np.repeat(v[:1], n_psi, axis=0) if autonomous else v
 
     if w_matrix is not None:  # W = r^2 W(unit): its extrema on every sphere from two numbers
         unit_min = _min_over_period(lambda p: _extreme_eigenvalues(w_matrix, p)[0], period)
         unit_size = float(np.max(np.abs(_extreme_eigenvalues(w_matrix, psi))))
 
+    # the searches of W itself (no closed form): with the shell, whose functions have several
+    # local extrema of W on a sphere, many more of the best samples are refined, and longer
+    w_common = dict(common, n_refine=max(64, common["n_refine"]), n_iter=max(200, common["n_iter"])) \
+        if shell else common
+
     def alpha_of(r: float) -> float:
         if w_matrix is not None:
             return r * r * unit_min
-        return float(sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False,
-                                     free_psi=True, **common).value[0])
+        if not shell:
+            return float(sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False,
+                                         free_psi=free, **w_common).value[0])
+        # the best 32 refined minima polished by L-BFGS-B (the direction and the azimuth free)
+        ext = sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False, free_psi=free,
+                              keep=32, **w_common)
+        on_sphere = lambda p, y: -sys.w(p, (r * y / np.linalg.norm(y, axis=1, keepdims=True)) * scales)  # noqa: E731
+        start = Extremum(-ext.value, ext.psi, ext.x / scales / r)
+        value, _, _ = _polish(on_sphere, start, free_psi=free)
+        # the level 0.1 % below the smallest W found: a search that misses the true minimum of a
+        # W without closed form by a little must not put the level above it
+        return float(min(ext.value.min(), -value.max())) * (1.0 - SHELL_LEVEL_MARGIN)
 
     def w_size(r: float) -> float:
         if w_matrix is not None:
@@ -827,10 +941,22 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         return float(sphere_extremum(lambda p, x: np.abs(sys.w(p, x)), psi, r, scales, dirs,
                                      per_psi=False, n_refine=1, n_iter=0, period=period).value[0])
 
+    inner_radii = {}  # shell: (r, alpha) -> the largest ball in {W < alpha} over the period
+
+    def inner_of(r: float, alpha: float) -> float | None:
+        if not shell:
+            return None
+        key = (r, alpha)
+        if key not in inner_radii:
+            inner_radii[key] = _inner_radius(sys, psi, r, alpha, scales, dirs, w_common, n_radii,
+                                             n_bisect, free)
+        return inner_radii[key]
+
     def band(r: float, alpha: float, stop: float | None, per_psi: bool = False, starts: str = "levels",
              directions=None, n_lbfgs: int = 64):
         return band_max_dw(sys, None, None, alpha, r, scales=scales, period=period, psi=psi,
-                           w_matrix=w_matrix, per_psi=per_psi,
+                           w_matrix=w_matrix, per_psi=per_psi, autonomous=autonomous,
+                           inner=inner_of(r, alpha),
                            directions=dirs if directions is None else directions,
                            n_levels=n_shells, stop_above=stop, n_refine=common["n_refine"],
                            n_iter=common["n_iter"], starts=starts, n_lbfgs=n_lbfgs)
@@ -861,7 +987,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
 
     # W' on the sphere itself (a part of the band): the paper's step 3 bounds A from above
     # the margin relative to the size of W on each sphere, as on the band
-    A1, step3 = _step3(sys, A, psi, scales, dirs, True, common, lambda r: -margin * w_size(r),
+    A1, step3 = _step3(sys, A, psi, scales, dirs, free, common, lambda r: -margin * w_size(r),
                        n_radii, n_bisect)
     first_worst = step3
     A_used, alpha, worst, need = 0.0, 0.0, first_worst, -margin * w_size(A)
@@ -910,8 +1036,8 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
     if A_used == 0.0:
         ext = sphere_extremum(sys.dw, psi, A, scales, dirs, **common)  # where (h) fails, per azimuth
         return TechnicalStabilityResult(
-            A_requested=A, scales=scales, A=0.0, alpha=0.0, psi=psi, lambda0=np.zeros(n_psi),
-            max_dW=ext.value, argmax_dW=ext.x,
+            A_requested=A, scales=scales, A=0.0, alpha=0.0, psi=psi_grid, lambda0=np.zeros(n_psi),
+            max_dW=spread(ext.value), argmax_dW=spread(ext.x),
             stable=np.zeros(n_psi, dtype=bool), period=period, step3_max_dW=step3,
             tol=need, reading="strict", n_evaluations=sys.count, rule="sound",
             level=float("nan"), band_max_dW=first_worst, A_step3=float(A1),
@@ -932,17 +1058,20 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         lam_max = _extreme_eigenvalues(w_matrix, psi)[1]
         lambda0 = np.minimum(np.sqrt(c / lam_max), A_used)
     else:
-        lambda0 = _start_radii(sys, psi, A_used, c, scales, dirs, common, n_radii, n_bisect)
+        lambda0 = _start_radii(sys, psi, A_used, c, scales, dirs, w_common, n_radii, n_bisect)
+    lambda0 = spread(lambda0)
     worst = max(worst, float(ext.value.max()))
     certified = worst <= need
     stable = (lambda0 > 0) & certified
     reduced = "" if A_used == A else f" (A reduced from {A:.4g} to {A_used:.4g})"
-    message = (f"certified at {int(stable.sum())} of {n_psi} azimuths{reduced}: W' < 0 on the band "
-               "||x|| <= A, W >= alpha over the whole period (numerical certificate)"
+    where = (f"the shell {inner_of(A_used, c):.4g} <= ||x|| <= A (which holds the band W >= alpha)" if shell
+             else "the band ||x|| <= A, W >= alpha")
+    message = (f"certified at {int(stable.sum())} of {n_psi} azimuths{reduced}: W' < 0 on {where} "
+               "over the whole period (numerical certificate)"
                if certified else "nothing certified: W' > -margin found on the band")
     return TechnicalStabilityResult(
-        A_requested=A, scales=scales, A=float(A_used), alpha=float(c), psi=psi, lambda0=lambda0,
-        max_dW=ext.value, argmax_dW=ext.x, stable=stable, period=period, step3_max_dW=step3,
+        A_requested=A, scales=scales, A=float(A_used), alpha=float(c), psi=psi_grid, lambda0=lambda0,
+        max_dW=spread(ext.value), argmax_dW=spread(ext.x), stable=stable, period=period, step3_max_dW=step3,
         tol=need, message=message, reading="strict", n_evaluations=sys.count, rule="sound",
         level=float(c), band_max_dW=worst, A_step3=float(A1), check_evaluations=int(check_evaluations),
     )

@@ -330,6 +330,42 @@ def _energy_rate_parallel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, o
                            c * n // n_chunks, (c + 1) * n // n_chunks)
 
 
+@_jit
+def _energy_value_range(psi, x, xi, ps, ctrl, P, sc, out, start, stop):
+    """The energy function's ``W`` (rotorlyap.analysis.functions.EnergyFunction.W) for the
+    states ``[start, stop)``: ``1/2 Omega^2 x_r^T M(q) x_r + U(q) - U(q_s) - grad U(q_s) . x_q``
+    with ``M`` from the generated ``rhs_terms`` and ``U`` from ``potential_terms``. ``xi`` (m, 6)
+    and ``ps`` (m', 14) as in :func:`_energy_rate_range`."""
+    T = np.empty(42)
+    pt = np.empty(14)
+    cyclic = sc[_CYCLIC] != 0.0
+    om2 = sc[_OMEGA] * sc[_OMEGA]
+    one = xi.shape[0] == 1
+    one_ps = ps.shape[0] == 1
+    for i in range(start, stop):
+        j = 0 if one else i
+        k = 0 if one_ps else i
+        q0 = x[i, 0] + xi[j, 0]
+        q1 = x[i, 1] + xi[j, 1]
+        q2 = x[i, 2] + xi[j, 2]
+        xr0, xr1, xr2 = x[i, 3], x[i, 4], x[i, 5]
+        thc = _pitch(psi[i], ctrl, cyclic)
+        _rhs_terms_into(q0, q1, q2, xi[j, 3] + xr0, xi[j, 4] + xr1, xi[j, 5] + xr2, thc, P, T)
+        _potential_terms_into(q0, q1, q2, thc, P, pt)
+        m0 = T[0] * xr0 + T[1] * xr1 + T[2] * xr2
+        m1 = T[1] * xr0 + T[3] * xr1 + T[4] * xr2
+        m2 = T[2] * xr0 + T[4] * xr1 + T[5] * xr2
+        kin = 0.5 * om2 * ((m0 * xr0 + m1 * xr1) + m2 * xr2)
+        out[i] = kin + pt[0] - ps[k, 0] - ((ps[k, 1] * x[i, 0] + ps[k, 2] * x[i, 1]) + ps[k, 3] * x[i, 2])
+
+
+@jit_parallel
+def _energy_value_parallel(psi, x, xi, ps, ctrl, P, sc, out, n_chunks):
+    n = x.shape[0]
+    for c in prange(n_chunks):
+        _energy_value_range(psi, x, xi, ps, ctrl, P, sc, out, c * n // n_chunks, (c + 1) * n // n_chunks)
+
+
 def _run(serial, parallel, n: int, args: tuple) -> None:
     """Run a kernel over ``n`` states: ``serial(*args, 0, n)`` on one thread below
     PARALLEL_MIN_STATES states, else ``parallel(*args, chunks)`` over every thread."""
@@ -377,4 +413,18 @@ def energy_rate(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatA
             c(dxi, dtype=np.float64), c(ps, dtype=np.float64), _controls(eq), data.P,
             data.scalars, data.stations, data.table, bool(constant), out)
     _run(_energy_rate_range, _energy_rate_parallel, n, args)
+    return out
+
+
+def energy_value(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatArray,
+                 xi: FloatArray, ps: FloatArray) -> FloatArray:
+    """The energy function's ``W`` (J) for flat ``psi`` (n,) and disturbances ``x`` (n, 6); ``xi``
+    (1 or n, 6) the steady motion, ``ps`` (1 or n, 14) the generated ``potential_terms`` at its
+    hinge angles."""
+    n = x.shape[0]
+    out = np.empty(n)
+    c = np.ascontiguousarray
+    args = (c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
+            c(ps, dtype=np.float64), _controls(eq), data.P, data.scalars, out)
+    _run(_energy_value_range, _energy_value_parallel, n, args)
     return out

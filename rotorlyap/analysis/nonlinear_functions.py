@@ -1,0 +1,275 @@
+"""Liapunov functions of the blade for its nonlinear range: the augmented energy and polynomials.
+
+A quadratic form of the linearised blade (:mod:`rotorlyap.analysis.functions`) certifies only
+where the linearisation dominates: its ``W'`` turns positive a degree or so from the steady
+motion, long before the blade itself is in trouble. What stops it is known: the blade's
+accelerations hold inertial terms quadratic in the disturbance (Coriolis and centrifugal
+couplings of the flap and lag rates, of order ``2 beta beta'`` in the lag equation), and a quadratic
+form of the state meets them head on. The blade's own energy does not: Jacobi's integral of the
+rotating blade, ``H = T2 + U`` (kinetic energy relative to the hub plus the effective potential
+of springs, gravity and the centrifugal field), holds the geometric and inertial nonlinearity
+exactly, and along the motions ``H' = q' . (Q_aero + Q_damp)``: only the work of the air loads and
+dampers, every inertial term gone. It cannot certify alone (the paper's difficulty: the
+aerodynamic coupling makes ``H'`` indefinite, :func:`~rotorlyap.analysis.functions.energy_function`),
+but it can carry a function that does.
+
+Two families, each a combination of basis functions whose coefficients are found by the scenario
+program of :mod:`rotorlyap.methods.scenario` (conditions of the sound rule asked on sampled states,
+counterexamples added round by round):
+
+``"energy"`` (the augmented energy)
+    ``W = c_0 H_s / H_ref + sum_{i<=j} c_ij(psi) y_i y_j``: the energy of the disturbed motion
+    (:class:`~rotorlyap.analysis.functions.EnergyFunction`, ``H_s`` its value shifted to vanish
+    with its gradient at the steady motion; ``H_ref`` its mean on the unit sphere, for scale)
+    plus every quadratic form of the scaled state ``y = x / a``, with coefficients constant in
+    hover and trigonometric polynomials of the azimuth in forward flight. The quadratic part
+    supplies the cross and correction terms that cancel the aerodynamic coupling the energy
+    lacks; its derivative ``2 y^T C f / a`` still meets the inertial terms, but the program keeps
+    its rows small where they matter, because the energy's own derivative has none.
+``"polynomial"``
+    ``W = sum c_e(psi) y^e`` over the monomials of degree 2 to 4 of the scaled state: the cubic
+    and quartic terms can cancel the quadratic part of the accelerations to their own order, as
+    a truncated power series of Zubov's equation would, without knowing the physics.
+
+Both are certified the same way as every function of the report: by the engine's sound rule
+(:func:`rotorlyap.technical_stability`) afterwards, on the shell between the largest ball inside
+the level set and the bound (``band="shell"``), a numerical certificate; the falsifier attacks
+them in the tests.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..conventions import DEFAULT_SCALES, STATE_NAMES, TWO_PI
+from ..methods.sampling import unit_sphere_points
+from ..methods.scenario import Basis, BasisFunction, Design, largest_design, monomial_basis
+from ..model.blade import Blade
+from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
+from .functions import EnergyFunction, energy_function
+
+__all__ = ["FAMILIES", "DesignedFunction", "designed_function", "energy_basis", "is_autonomous",
+           "mode_directions", "polynomial_basis"]
+
+FAMILIES = ("energy", "polynomial")
+"""The designed function families (module docstring)."""
+
+#: Start radii of the design's search, scaled norm: from ``LAM_START`` up by factors of 2 (and
+#: down, if it fails) to ``LAM_MAX``; the ratios ``A / lam`` tried at each, smallest first (a
+#: badly damped mode needs a level set long in its direction, hence the large ratios).
+LAM_START, LAM_MAX, RATIOS = 0.1, 20.0, (2.5, 4.0, 8.0, 16.0, 32.0)
+
+
+def is_autonomous(blade: Blade, steady: SteadyMotion) -> bool:
+    """True if the disturbed blade does not depend on the azimuth: hover (``mu = 0``) about a
+    constant steady motion without cyclic pitch (the rotating frame then sees a steady flow)."""
+    return blade.mu == 0.0 and steady.is_constant and not blade.has_cyclic
+
+
+def mode_directions(blade: Blade, steady: SteadyMotion, scales) -> np.ndarray:
+    """Unit directions of the scaled state along the linearised blade's modes: the real and
+    imaginary parts of the eigenvectors of the Jacobian about the steady motion (averaged over
+    the period in forward flight), each normalised, shape ``(k, 6)``. Along a slowly decaying
+    mode ``W'`` is small, so the design samples these directions densely."""
+    a = _check_scales(scales)
+    if steady.is_constant:
+        psi = np.zeros(1) if is_autonomous(blade, steady) else TWO_PI * np.arange(16) / 16
+        z = np.broadcast_to(steady.state, (psi.size, 6))
+    else:
+        psi = TWO_PI * np.arange(16) / 16
+        z = np.asarray(steady.xi_function(psi), dtype=float)
+    J = blade.jacobian(psi, z).mean(axis=0) * a[None, :] / a[:, None]  # scaled coordinates
+    _, V = np.linalg.eig(J)
+    parts = np.vstack([V.real.T, V.imag.T])
+    norms = np.linalg.norm(parts, axis=1)
+    parts = parts[norms > 1e-9 * norms.max()]
+    return parts / np.linalg.norm(parts, axis=1, keepdims=True)
+
+
+def _check_scales(scales) -> np.ndarray:
+    a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float).reshape(-1)
+    if a.size != 6 or not np.all(np.isfinite(a)) or np.any(a <= 0):
+        raise ValueError(f"scales must hold 6 finite numbers > 0 (rad, rad/rad), got {np.asarray(scales).tolist()}")
+    return a
+
+
+def _harmonics(blade: Blade, steady: SteadyMotion, harmonics: int | None) -> int:
+    if harmonics is None:
+        return 0 if is_autonomous(blade, steady) else 1
+    if isinstance(harmonics, bool) or int(harmonics) != harmonics or harmonics < 0:
+        raise ValueError(f"harmonics must be an integer >= 0, got {harmonics!r}")
+    return int(harmonics)
+
+
+def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | None = None) -> Basis:
+    """The augmented energy's basis: the energy of the disturbed motion and the quadratic forms.
+
+    Parameters
+    ----------
+    blade : Blade
+        The blade at its advance ratio.
+    steady : SteadyMotion, optional
+        The steady motion (anything :func:`~rotorlyap.model.steady.as_steady_motion` takes; None:
+        the hover equilibrium).
+    scales : array_like, optional
+        The ``a_i`` of the scaled state (rad, rad/rad); default
+        :data:`rotorlyap.conventions.DEFAULT_SCALES`.
+    harmonics : int, optional
+        Harmonics of the azimuth in the quadratic coefficients; default 0 where the disturbed
+        blade is autonomous (:func:`is_autonomous`), else 1.
+
+    Returns
+    -------
+    rotorlyap.methods.scenario.Basis
+        ``1 + 21 (2 harmonics + 1)`` functions: ``"energy"`` (dimensionless: the energy in J
+        divided by its mean on the unit sphere of the scaled norm), then the quadratic monomials.
+    """
+    a = _check_scales(scales)
+    steady = as_steady_motion(steady, blade)
+    fun = energy_function(blade, steady)
+    u = unit_sphere_points(6, 256, 0)
+    size = float(np.mean(fun.W(np.zeros(u.shape[0]), u * a)))
+    if not (np.isfinite(size) and size > 0):
+        raise ValueError("the energy of the disturbed motion is not positive on the unit sphere "
+                         f"(mean {size:.3g} J): its effective potential is not a minimum at the steady motion")
+    energy = Basis(("energy",), lambda psi, x: (fun.W(psi, x) / size)[:, None],
+                   lambda psi, x: (fun.dW(psi, x) / size)[:, None])
+    k = _harmonics(blade, steady, harmonics)
+    return energy + monomial_basis(fun.f, a, (2,), harmonics=k, names=STATE_NAMES)
+
+
+def polynomial_basis(blade: Blade, steady=None, *, scales=None, degrees=(2, 3, 4),
+                     harmonics: int | None = None) -> Basis:
+    """The polynomial family's basis: monomials of the scaled state of the given degrees.
+
+    ``harmonics`` (default as :func:`energy_basis`) multiply the quadratic monomials only; the
+    higher degrees have constant coefficients (their number grows fast: 56 cubic and 126 quartic
+    monomials of six variables).
+    """
+    a = _check_scales(scales)
+    steady = as_steady_motion(steady, blade)
+    f = disturbed_rhs(blade, steady)
+    k = _harmonics(blade, steady, harmonics)
+    higher = tuple(d for d in degrees if d > 2)
+    basis = monomial_basis(f, a, (2,), harmonics=k, names=STATE_NAMES)
+    if higher:
+        basis = basis + monomial_basis(f, a, higher, names=STATE_NAMES)
+    return basis
+
+
+@dataclass(frozen=True)
+class DesignedFunction:
+    """A designed Liapunov function of the blade: what the engine takes, and how it was made.
+
+    Attributes
+    ----------
+    blade : Blade
+    steady : SteadyMotion
+    family : str
+        One of :data:`FAMILIES`.
+    design : rotorlyap.methods.scenario.Design
+        The scenario program's result (start radius and bound asked for, margin, rounds, ...).
+    scales : numpy.ndarray
+        The ``a_i`` of the scaled state.
+    autonomous : bool
+        The disturbed blade does not depend on the azimuth (:func:`is_autonomous`).
+    label : str
+        Name for tables and legends.
+    """
+
+    blade: Blade
+    steady: SteadyMotion
+    family: str
+    design: Design
+    scales: np.ndarray
+    autonomous: bool
+    label: str
+
+    @property
+    def function(self) -> BasisFunction:
+        """The designed ``W`` (raises if the design found none)."""
+        if self.design.function is None:
+            raise ValueError(f"the {self.family} design found no function: {self.design!r}")
+        return self.design.function
+
+    @property
+    def designed(self) -> bool:
+        """The program found a function that passed its own counterexample rounds."""
+        return bool(self.design.feasible and self.design.function is not None)
+
+    def f(self, psi, x) -> np.ndarray:
+        """The disturbed right-hand side ``h(psi, xi + x) - xi'``."""
+        return self.function.f(psi, x)
+
+    def W(self, psi, x) -> np.ndarray:
+        """``W(psi, x)`` (dimensionless; level 1 at the designed bound), shape ``(m,)``."""
+        return self.function.W(psi, x)
+
+    def dW(self, psi, x) -> np.ndarray:
+        """``W'`` along the motions of the full nonlinear blade, per rad of azimuth, shape ``(m,)``."""
+        return self.function.dW(psi, x)
+
+    def engine_options(self) -> dict:
+        """The sound rule's options this function is made for: the shell search, and the azimuth
+        held fixed where nothing depends on it."""
+        return {"band": "shell", "autonomous": self.autonomous}
+
+    def __repr__(self) -> str:
+        return f"DesignedFunction({self.label}, {self.design!r})"
+
+
+def designed_function(blade: Blade, steady=None, family: str = "energy", *, scales=None,
+                      harmonics: int | None = None, lam_start: float = LAM_START, lam_max: float = LAM_MAX,
+                      ratios=RATIOS, label: str | None = None, **design_options) -> DesignedFunction:
+    """Design a Liapunov function of ``family`` for the blade about its steady motion.
+
+    The scenario program (:func:`rotorlyap.methods.scenario.largest_design`) searches the largest
+    start radius it can meet, with the bound ``A`` a ratio of it; the engine then certifies what
+    it can (:meth:`DesignedFunction.engine_options`).
+
+    Parameters
+    ----------
+    blade : Blade
+    steady : SteadyMotion, optional
+        Anything :func:`~rotorlyap.model.steady.as_steady_motion` takes (None: the hover equilibrium).
+    family : {"energy", "polynomial"}
+        The function family (module docstring).
+    scales : array_like, optional
+        The norm's ``a_i``; default :data:`rotorlyap.conventions.DEFAULT_SCALES`.
+    harmonics : int, optional
+        Harmonics of the azimuth in the quadratic coefficients (default: 0 in hover, 1 otherwise).
+    lam_start, lam_max : float
+        Range of start radii searched, scaled norm.
+    ratios : sequence of float
+        Ratios ``A / lam`` tried at each start radius.
+    label : str, optional
+        Name for tables (default: the family's).
+    **design_options
+        Passed on to :func:`rotorlyap.methods.scenario.design` (``n_samples``, ``rounds``, ...).
+
+    Returns
+    -------
+    DesignedFunction
+        Check :attr:`DesignedFunction.designed`: False where the program found nothing.
+
+    Raises
+    ------
+    ValueError
+        An unknown family, bad scales or harmonics.
+    """
+    if family not in FAMILIES:
+        raise ValueError(f"family must be one of {FAMILIES}, got {family!r}")
+    a = _check_scales(scales)
+    steady = as_steady_motion(steady, blade)
+    autonomous = is_autonomous(blade, steady)
+    make = energy_basis if family == "energy" else polynomial_basis
+    basis = make(blade, steady, scales=a, harmonics=harmonics)
+    f = disturbed_rhs(blade, steady)
+    name = label or ("augmented energy" if family == "energy" else "polynomial")
+    design_options.setdefault("directions", mode_directions(blade, steady, a))
+    d = largest_design(basis, f, a, lam_start=lam_start, lam_max=lam_max, ratios=ratios,
+                       period=TWO_PI, periodic=not autonomous, label=name, **design_options)
+    return DesignedFunction(blade=blade, steady=steady, family=family, design=d, scales=a,
+                            autonomous=autonomous, label=name)
