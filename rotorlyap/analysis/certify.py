@@ -57,13 +57,16 @@ FUNCTIONS = ("auto", "quadratic") + FAMILIES
 
 @dataclass(frozen=True)
 class Candidate:
-    """One function :func:`certify` tried: its family, verdict, bound and start radius (scaled norm)."""
+    """One function :func:`certify` tried: its family, verdict, bound and start radius (scaled norm);
+    for a designed family, ``tried`` holds the scenario program's attempts ``(lam, A, designed)``
+    (:attr:`rotorlyap.methods.scenario.Design.tried`: where its search stopped, and why)."""
 
     function: str
     certified: bool
     bound: float
     start_region: float
     message: str
+    tried: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -262,7 +265,8 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         ok = res is not None and bool(np.all(res.stable))
         lam = float(np.min(res.lambda0)) if ok else 0.0
         lam = lam if math.isfinite(lam) else 0.0
-        tried.append((family, res, fun, Candidate(family, ok, float(res.A) if ok else 0.0, lam, message)))
+        attempts = tuple(fun.design.tried) if family in FAMILIES and fun is not None else ()
+        tried.append((family, res, fun, Candidate(family, ok, float(res.A) if ok else 0.0, lam, message, attempts)))
     best = max(tried, key=lambda item: (item[3].certified, item[3].start_region))
     family, res, fun, cand = best
     proof = None

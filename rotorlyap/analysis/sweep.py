@@ -60,7 +60,7 @@ from ..model.parameters import CG_POSITIONS, BladeParameters
 from .certify import FUNCTIONS, Certificate, certify
 
 __all__ = ["DASK_INSTALL", "GRID_SETTINGS", "RESULT_COLUMNS", "WORKER_ENVIRONMENT", "SweepResult", "available_cores",
-           "evaluate_point", "grid_names", "grid_value_type", "sweep", "sweep_fields"]
+           "evaluate_point", "grid_names", "grid_value_type", "process_map", "sweep", "sweep_fields"]
 
 DASK_INSTALL: str = 'pip install "dask[distributed]"'
 """The install line of the optional Dask dependency (``scheduler=``)."""
@@ -447,24 +447,41 @@ def _run_processes(tasks: list[tuple], workers: int, progress: Callable[[int, in
         raise TypeError("the blade cannot be sent to worker processes (a profile given as a lambda or a local "
                         "function cannot be pickled): use a TabulatedProfile or a module-level function, or "
                         f"workers=1 ({exc})") from exc
+    return process_map(_evaluate_task, tasks, workers, progress)
+
+
+def process_map(fn: Callable[[Any], Any], items: Sequence[Any], workers: int | None = None,
+                progress: Callable[[int, int], None] | None = None) -> list:
+    """``[fn(item) for item in items]`` in ``workers`` fresh processes, results in the items' order.
+
+    The processes of :func:`sweep` (module docstring): started by ``"spawn"`` with
+    :data:`WORKER_ENVIRONMENT` (one BLAS/OpenMP thread each), so that each result is the one a
+    fresh interpreter computes. ``fn`` must be a module-level function and the items picklable;
+    items are submitted in order, so put the longest first. ``workers`` defaults to
+    :func:`available_cores`; ``progress(done, total)`` is called as results arrive.
+    """
+    workers = available_cores() if workers is None else int(workers)
+    if workers < 1:
+        raise ValueError(f"workers must be >= 1, got {workers}")
+    progress = progress or _no_progress
     # "spawn": a fresh interpreter per worker, started with WORKER_ENVIRONMENT (a forked child
     # would inherit this process's BLAS threads, and numba's GNU OpenMP layer aborts a child forked
     # after its threads started; a fork server keeps the environment it was started with)
     ctx = multiprocessing.get_context("spawn")
-    out: list[tuple | None] = [None] * len(tasks)
+    out: list = [None] * len(items)
     pool = ProcessPoolExecutor(max_workers=workers, mp_context=ctx)
     try:
         with _environment(WORKER_ENVIRONMENT):  # the workers start at the first submissions
-            futures = {pool.submit(_evaluate_task, task): i for i, task in enumerate(tasks)}
-        progress(0, len(tasks))
+            futures = {pool.submit(fn, item): i for i, item in enumerate(items)}
+        progress(0, len(items))
         for done, fut in enumerate(as_completed(futures), start=1):
             out[futures[fut]] = fut.result()
-            progress(done, len(tasks))
-    except BaseException:  # an interrupt or a bug: drop the points not started rather than wait for them
+            progress(done, len(items))
+    except BaseException:  # an interrupt or a bug: drop the items not started rather than wait for them
         pool.shutdown(wait=False, cancel_futures=True)
         raise
     pool.shutdown()
-    return out  # type: ignore[return-value]
+    return out
 
 
 def _dask():

@@ -1,0 +1,327 @@
+"""The chapter "How large a disturbance": certificates against the region of stable motion.
+
+* :data:`CASES`: the Table I hovers (three C.G., the paper's controls) and the trimmed helicopter
+  (forward C.G.) at mu = 0.1 and 0.2;
+* :func:`large_disturbances`: for each case, in parallel processes, the default
+  :func:`rotorlyap.certify` (the quadratic function and the augmented energy; at mu = 0.2 the
+  quadratic function alone, see :data:`CASES`) and the yardstick,
+  :func:`rotorlyap.analysis.region.stable_region`; every number recomputed;
+* :func:`figure_reach`: the certified start region along each hinge angle and rate as a fraction
+  of the simulated region, per function and case;
+* :func:`figure_slices`: the simulated flap-lag and flap-pitch slices with the certified start
+  regions drawn in.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..analysis.certify import Candidate, certify
+from ..analysis.region import StableRegion, stable_region
+from ..analysis.sweep import process_map
+from ..conventions import HINGES, STATE_NAMES
+from ..model.parameters import BladeParameters
+from .style import CG_COLORS, HINGE_COLORS, finish, subplots
+
+__all__ = ["CASES", "Case", "CaseResult", "LargeDisturbances", "figure_reach", "figure_slices",
+           "large_disturbances"]
+
+
+@dataclass(frozen=True)
+class Case:
+    """One case of the chapter.
+
+    Attributes
+    ----------
+    key : str
+        Name of the case in the glued facts.
+    label : str
+        The case as tables name it.
+    blade : tuple of (str, str)
+        ``("table_i" or "flight_case", C.G. case)``: the :class:`BladeParameters` constructor.
+    mu : float
+        Advance ratio.
+    condition : str
+        The flight condition of :func:`rotorlyap.certify` (``"none"``: the paper's controls).
+    function : str
+        The ``function`` argument of :func:`rotorlyap.certify`.
+    """
+
+    key: str
+    label: str
+    blade: tuple[str, str]
+    mu: float
+    condition: str
+    function: str = "auto"
+
+    def params(self) -> BladeParameters:
+        """The blade of the case."""
+        make, cg = self.blade
+        return getattr(BladeParameters, make)(cg)
+
+
+CASES: tuple[Case, ...] = (
+    Case("forward", "forward C.G., hover", ("table_i", "forward"), 0.0, "none"),
+    Case("neutral", "neutral C.G., hover", ("table_i", "neutral"), 0.0, "none"),
+    Case("backward", "backward C.G., hover", ("table_i", "backward"), 0.0, "none"),
+    Case("mu01", "trimmed, mu = 0.1", ("flight_case", "forward"), 0.1, "propulsive"),
+    # the augmented energy's design takes about two minutes of one core in forward flight: the
+    # chapter's budget (three minutes on two cores) holds one such case, so mu = 0.2 shows the
+    # quadratic function against its yardstick (the default certify on demand: README)
+    Case("mu02", "trimmed, mu = 0.2", ("flight_case", "forward"), 0.2, "propulsive", "quadratic"),
+)
+"""The chapter's cases, in the order of its tables."""
+
+
+@dataclass(frozen=True)
+class CaseResult:
+    """The certificates and the yardstick of one case (plain data: made in a worker process).
+
+    Attributes
+    ----------
+    case : Case
+    rotor_speed : float
+        ``Omega``, rad/s.
+    scales : numpy.ndarray
+        Norm scales ``a_i``, rad and rad/rad.
+    growth_rate : float
+        Largest real part of the Floquet exponents, per rev.
+    chosen : str
+        The function of the default certificate (``"quadratic"`` or ``"energy"``).
+    candidates : tuple of Candidate
+        Every function :func:`rotorlyap.certify` tried.
+    region : StableRegion
+        The yardstick.
+    """
+
+    case: Case
+    rotor_speed: float
+    scales: np.ndarray
+    growth_rate: float
+    chosen: str
+    candidates: tuple[Candidate, ...]
+    region: StableRegion
+
+    def candidate(self, function: str) -> Candidate | None:
+        """The candidate of ``function`` (None if not tried)."""
+        return next((c for c in self.candidates if c.function == function), None)
+
+    def per_component(self, radius: float) -> np.ndarray:
+        """A radius of the scaled norm along each state component: deg (angles), deg/s (rates), (6,)."""
+        deg = np.degrees(self.scales) * radius
+        return deg * np.r_[np.ones(3), np.full(3, self.rotor_speed)]
+
+    @property
+    def simulated(self) -> np.ndarray:
+        """The yardstick along each component, the smaller sign: deg and deg/s, (6,)."""
+        return self.per_component(1.0) * self.region.component_extent
+
+    def reach(self, function: str) -> np.ndarray:
+        """Start region of ``function`` over the yardstick, per component, -, (6,) (NaN: not tried)."""
+        c = self.candidate(function)
+        if c is None:
+            return np.full(6, np.nan)
+        return c.start_region / self.region.component_extent
+
+    def limit(self, function: str) -> tuple[float, float]:
+        """For a designed function: the start radius of the design the certificate rests on (the
+        program's last attempt, its thorough check passed) and the smallest larger one the
+        program did not meet, scaled norm (NaN where there is none)."""
+        c = self.candidate(function)
+        tried = np.array(c.tried if c is not None else (), dtype=float).reshape(-1, 3)
+        if not tried.size or tried[-1, 2] == 0:
+            return math.nan, math.nan
+        met = float(tried[-1, 0])
+        above = tried[(tried[:, 2] == 0) & (tried[:, 0] > met), 0]
+        return met, (float(above.min()) if above.size else math.nan)
+
+
+def _compute(task: tuple[str, Case]):
+    """One task of a worker process: ``("certificate", case)`` or ``("region", case)``."""
+    kind, case = task
+    if kind == "region":
+        return stable_region(case.params(), case.mu, condition=case.condition)
+    cert = certify(case.params(), case.mu, condition=case.condition, function=case.function)
+    return (cert.trim.params.rotor_speed, np.asarray(cert.scales, dtype=float), cert.growth_rate, cert.function,
+            tuple(cert.candidates))
+
+
+_NAMES = {"energy": "augmented energy", "quadratic": "quadratic function", "polynomial": "polynomial function"}
+
+
+def _sig(v: float, digits: int = 2) -> float:
+    return float(f"{v:.{digits}g}") if math.isfinite(v) else v
+
+
+@dataclass(frozen=True)
+class LargeDisturbances:
+    """The chapter's results: :func:`large_disturbances`."""
+
+    results: tuple[CaseResult, ...]
+
+    def __getitem__(self, key: str) -> CaseResult:
+        return next(r for r in self.results if r.case.key == key)
+
+    def markdown(self) -> str:
+        """The table: per case and hinge, the start region of each function and the simulated region."""
+        head = ("| case | | flap (deg) | lag (deg) | pitch (deg) | flap rate (deg/s) | lag rate (deg/s) "
+                "| pitch rate (deg/s) |\n|---|---|---|---|---|---|---|---|")
+        lines = [head]
+        for r in self.results:
+            rows = [("simulated: returns from", r.simulated, r.region.hit_s_max[:6] & r.region.hit_s_max[6:])]
+            for fn, name in (("energy", "augmented energy"), ("quadratic", "quadratic function")):
+                c = r.candidate(fn)
+                if c is not None:
+                    rows.append((f"{name}: certified start", r.per_component(c.start_region), np.zeros(6, bool)))
+            for i, (what, vals, cap) in enumerate(rows):
+                cells = [("&ge; " if k else "") + f"{_sig(v):g}" for v, k in zip(vals, cap)]
+                lines.append(f"| {r.case.label if i == 0 else ''} | {what} | " + " | ".join(cells) + " |")
+        return "\n".join(lines)
+
+    def summary(self) -> str:
+        """Rounded lines per case: the functions' start radii and bounds, their reach of the yardstick."""
+        out = []
+        for r in self.results:
+            out.append(f"{r.case.label}: certified by the {_NAMES[r.chosen]} "
+                       f"(growth {r.growth_rate:.3f} per rev)")
+            for c in r.candidates:
+                reach = r.reach(c.function)
+                out.append(f"  {c.function}: certified={c.certified}, A = {_sig(c.bound):g}, "
+                           f"lambda0 = {_sig(c.start_region):g}, of the simulated region: "
+                           f"{_sig(100 * np.nanmin(reach)):g}-{_sig(100 * np.nanmax(reach)):g} %")
+                if c.tried:
+                    best, fail = r.limit(c.function)
+                    out.append(f"    designed for lambda = {_sig(best):g}; the program did not meet {_sig(fail):g}")
+            sim = r.simulated
+            cap = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
+            out.append("  simulated (deg, deg/s): " + ", ".join(
+                f"{STATE_NAMES[i]} {'>= ' if cap[i] else ''}{_sig(sim[i]):g}" for i in range(6)))
+        return "\n".join(out)
+
+    def facts(self) -> dict:
+        """The numbers the chapter's text quotes, rounded (2 significant digits)."""
+        f = {}
+        gains = []
+        for r in self.results:
+            k = r.case.key
+            q = r.candidate("quadratic")
+            e = r.candidate("energy")
+            f[f"ch11_{k}_chosen"] = _NAMES[r.chosen]
+            f[f"ch11_{k}_sim_flap"] = _sig(r.simulated[0])
+            f[f"ch11_{k}_q_flap"] = _sig(r.per_component(q.start_region)[0])
+            f[f"ch11_{k}_q_reach"] = _sig(100 * np.nanmin(r.reach("quadratic")))
+            if e is not None:
+                f[f"ch11_{k}_e_flap"] = _sig(r.per_component(e.start_region)[0])
+                f[f"ch11_{k}_e_reach"] = _sig(100 * np.nanmin(r.reach("energy")))
+                f[f"ch11_{k}_gain"] = _sig(e.start_region / q.start_region)
+                gains.append(e.start_region / q.start_region)
+                best, fail = r.limit("energy")
+                f[f"ch11_{k}_e_A"] = _sig(e.bound)
+                f[f"ch11_{k}_e_met"] = _sig(best)
+                f[f"ch11_{k}_e_fail"] = _sig(fail)
+            f[f"ch11_{k}_q_A"] = _sig(q.bound)
+            f[f"ch11_{k}_growth"] = _sig(r.growth_rate)
+        if gains:
+            f["ch11_gain_lo"], f["ch11_gain_hi"] = _sig(min(gains)), _sig(max(gains))
+        return f
+
+    def export(self) -> dict:
+        """The table's numbers for the CSV download (deg, deg/s; NaN: not tried)."""
+        rows = {"case": [], "quantity": [], **{n: [] for n in STATE_NAMES}}
+        for r in self.results:
+            items = [("simulated", r.simulated)]
+            for fn in ("energy", "quadratic"):
+                c = r.candidate(fn)
+                items.append((f"{fn} start", r.per_component(c.start_region) if c else np.full(6, np.nan)))
+            for what, vals in items:
+                rows["case"].append(r.case.key)
+                rows["quantity"].append(what)
+                for n, v in zip(STATE_NAMES, vals):
+                    rows[n].append(float(v))
+        return rows
+
+
+def large_disturbances(cases=CASES, *, workers: int | None = None) -> LargeDisturbances:
+    """Certify each case and measure its yardstick, in ``workers`` processes (default: every core).
+
+    The tasks go to the processes longest first (the certificates with a designed function in
+    forward flight, then in hover, then the yardsticks and the quadratic certificates).
+    """
+    cases = tuple(cases)
+
+    def cost(task):
+        kind, case = task
+        if kind == "region":
+            return 1
+        return 4 if case.function != "quadratic" and case.mu > 0 else (3 if case.function != "quadratic" else 2)
+
+    tasks = [(kind, c) for c in cases for kind in ("certificate", "region")]
+    order = sorted(range(len(tasks)), key=lambda i: -cost(tasks[i]))
+    done = process_map(_compute, [tasks[i] for i in order], workers)
+    out = {tasks[i]: v for i, v in zip(order, done)}
+    results = []
+    for c in cases:
+        omega, scales, growth, chosen, candidates = out[("certificate", c)]
+        results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)]))
+    return LargeDisturbances(tuple(results))
+
+
+_FUNCTION_STYLE = {"energy": ("augmented energy", "o", "-"), "quadratic": ("quadratic function", "s", "--")}
+
+
+def figure_reach(data: LargeDisturbances):
+    """Each function's certified start region over the simulated region, per state component and case."""
+    fig, ax = subplots(figsize=(6.6, 3.6))
+    x = np.arange(6)
+    n = len(data.results)
+    width = 0.8 / n
+    for j, r in enumerate(data.results):
+        color = CG_COLORS.get(r.case.blade[1], "0.3") if r.case.mu == 0 else ("#0072B2" if r.case.mu < 0.15 else "#56B4E9")
+        for fn, (name, marker, ls) in _FUNCTION_STYLE.items():
+            reach = 100 * r.reach(fn)
+            if np.all(np.isnan(reach)):
+                continue
+            xs = x - 0.4 + width * (j + 0.5)
+            ax.plot(xs, reach, marker=marker, ls="none", color=color, ms=5,
+                    mfc=color if fn == "energy" else "white",
+                    label=f"{r.case.label}, {name}")
+    ax.set_yscale("log")
+    ax.axhline(100, color="0.5", lw=0.8)
+    ax.axhline(50, color="0.5", lw=0.8, ls=":")
+    ax.set_xticks(x, [f"{h}" for h in HINGES] + [f"{h} rate" for h in HINGES])
+    ax.set_ylabel("certified start / simulated region (%)")
+    ax.set_ylim(0.05, 200)
+    ax.grid(axis="y", which="major", lw=0.4, color="0.85")
+    fig.legend(loc="upper center", ncol=2, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 1.0))
+    return finish(fig, rect=(0, 0, 1, 0.72))
+
+
+def figure_slices(data: LargeDisturbances, keys=("forward", "backward")):
+    """The simulated slices (flap-lag, flap-pitch) with the certified start regions, per case."""
+    fig, axes = subplots(len(keys), 2, figsize=(6.6, 3.0 * len(keys)), squeeze=False)
+    t = np.linspace(0, 2 * np.pi, 200)
+    for row, key in zip(axes, keys):
+        r = data[key]
+        for ax, name in zip(row, ("flap-lag", "flap-pitch")):
+            s = r.region.slices[name]
+            di, dj = np.degrees(r.scales[s.i]), np.degrees(r.scales[s.j])
+            X, Y = np.meshgrid(s.axis_j * dj, s.axis_i * di)
+            ax.contourf(X, Y, s.stable.astype(float), levels=[-0.5, 0.5, 1.5], colors=["white", "#CDE8D8"])
+            ax.contour(X, Y, s.stable.astype(float), levels=[0.5], colors=["#009E73"], linewidths=1.0)
+            for fn, (label, _, ls) in _FUNCTION_STYLE.items():
+                c = r.candidate(fn)
+                if c is None or not c.certified:
+                    continue
+                ax.plot(c.start_region * dj * np.cos(t), c.start_region * di * np.sin(t), ls=ls, color="black",
+                        lw=1.0, label=f"{label}: certified start")
+            ax.set_xlabel(f"{name.split('-')[1]} angle (deg)")
+            ax.set_ylabel("flap angle (deg)")
+            ax.set_title(f"{r.case.label}: {name}", fontsize=9)
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    from matplotlib.patches import Patch
+    handles.append(Patch(facecolor="#CDE8D8", edgecolor="#009E73", label="simulated: returns"))
+    fig.legend(handles=handles, loc="upper center", ncol=3, fontsize=7, frameon=False)
+    return finish(fig, rect=(0, 0, 1, 0.94))

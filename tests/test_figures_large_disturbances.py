@@ -1,0 +1,88 @@
+"""What the chapter "How large a disturbance" gathers and prints (rotorlyap.figures.large_disturbances).
+
+Each test names the fact it checks. The chapter's own numbers are compared by nbval; here the
+data object is checked against the functions it gathers (one hover case with the quadratic
+function alone, in two worker processes), its reading of the design program's attempts on made-up
+attempts, and its figures for legibility.
+"""
+
+import dataclasses
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+from rotorlyap import certify  # noqa: E402
+from rotorlyap.analysis.certify import Candidate  # noqa: E402
+from rotorlyap.analysis.sweep import process_map  # noqa: E402
+from rotorlyap.conventions import DEFAULT_SCALES  # noqa: E402
+from rotorlyap.figures import large_disturbances as chapter  # noqa: E402
+from rotorlyap.figures.export import figure_csv  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def data():
+    case = dataclasses.replace(chapter.CASES[0], function="quadratic")
+    return chapter.large_disturbances([case], workers=2)
+
+
+def _square(x):
+    return x * x
+
+
+def test_process_map_keeps_the_order_of_the_items_whatever_finishes_first():
+    assert process_map(_square, [3, 1, 2], workers=2) == [9, 1, 4]
+    with pytest.raises(ValueError, match="workers must be >= 1"):
+        process_map(_square, [1], workers=0)
+
+
+@pytest.mark.slow
+def test_a_case_holds_the_certificate_certify_gives_and_its_yardstick(data):
+    r = data["forward"]
+    direct = certify(r.case.params(), 0.0, condition="none", function="quadratic")
+    (cand,) = r.candidates
+    assert cand.function == "quadratic" and cand.certified
+    assert cand.start_region == pytest.approx(direct.start_region, rel=1e-9)  # same numbers in a worker
+    per_hinge = direct.start_region_per_hinge
+    assert r.per_component(cand.start_region)[0] == pytest.approx(per_hinge["flap"][0], rel=1e-12)
+    assert r.per_component(cand.start_region)[3] == pytest.approx(per_hinge["flap"][1], rel=1e-12)
+    # the yardstick in the same units: deg and deg/s of the region's own per-hinge reading
+    assert r.simulated[1] == pytest.approx(r.region.per_hinge["lag"][0], rel=1e-12)
+    assert r.simulated[4] == pytest.approx(r.region.per_hinge["lag"][1], rel=1e-12)
+    # the certificate starts inside the region of stable motion, along every component
+    assert np.all(r.reach("quadratic") < 1.0)
+    assert np.all(np.isnan(r.reach("energy")))
+
+
+@pytest.mark.slow
+def test_the_table_csv_and_figures_are_made_from_the_data(data, tmp_path):
+    table = data.markdown()
+    assert table.count("\n") == 1 + 2  # header, rule, then the yardstick and one function
+    assert "quadratic function: certified start" in table and "augmented energy" not in table
+    facts = data.facts()
+    assert facts["ch11_forward_chosen"] == "quadratic function"
+    assert "ch11_gain_lo" not in facts  # no designed function: no gain to quote
+    path = figure_csv(data.export(), tmp_path / "d.csv")
+    assert path.read_text().splitlines()[0].startswith("case,quantity,beta")
+    chapter.figure_reach(data)
+    chapter.figure_slices(data, keys=("forward",))
+
+
+def _result(tried):
+    region = type("Region", (), {"component_extent": np.full(6, 10.0)})()
+    cand = Candidate("energy", True, 8.0, 3.0, "ok", tried)
+    return chapter.CaseResult(chapter.CASES[0], 10.0, np.asarray(DEFAULT_SCALES), -0.1, "energy", (cand,), region)
+
+
+def test_the_limit_is_read_from_the_design_the_certificate_rests_on():
+    # the search's attempts, then the thorough re-designs: 3.2 failed thoroughly, 1.6 passed
+    tried = ((0.8, 2.0, True), (1.6, 4.0, True), (3.2, 8.0, True), (6.4, 16.0, False), (4.5, 11.0, False),
+             (3.2, 8.0, False), (1.6, 4.0, True))
+    assert _result(tried).limit("energy") == (1.6, 3.2)
+    # nothing larger failed: no limit found by the program
+    assert np.isnan(_result(((0.8, 2.0, True),)).limit("energy")[1])
+    # the last attempt failed: the design was not made
+    assert all(np.isnan(_result(((0.8, 2.0, False),)).limit("energy")))
