@@ -12,6 +12,8 @@ figure.
 * :mod:`~rotorlyap.figures.validation`: chapter 7, beyond the paper;
 * :mod:`~rotorlyap.figures.flight`: chapter 8, the forward flight of a trimmed helicopter;
 * :mod:`~rotorlyap.figures.your_blade`: chapter 9, your own blade;
+* :mod:`~rotorlyap.figures.proofs`: chapter 10, certificates as proofs;
+* :mod:`~rotorlyap.figures.large_disturbances`: chapter 11, how large a disturbance;
 * :mod:`~rotorlyap.figures.style` (shared colours), :mod:`~rotorlyap.figures.export` (CSV,
   glue, tables), :mod:`~rotorlyap.figures.commands` (the command line's figures).
 """
