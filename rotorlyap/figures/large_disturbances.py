@@ -6,6 +6,8 @@
   :func:`rotorlyap.certify` (the quadratic function and the augmented energy; at mu = 0.2 the
   quadratic function alone, see :data:`CASES`) and the yardstick,
   :func:`rotorlyap.analysis.region.stable_region`; every number recomputed;
+* :func:`anatomy`: a designed function taken apart (the energy's share, where ``W'`` turns
+  positive beyond the bound);
 * :func:`figure_reach`: the certified start region along each hinge angle and rate as a fraction
   of the simulated region, per function and case;
 * :func:`figure_slices`: the simulated flap-lag and flap-pitch slices with the certified start
@@ -23,11 +25,12 @@ from ..analysis.certify import Candidate, certify
 from ..analysis.region import StableRegion, stable_region
 from ..analysis.sweep import process_map
 from ..conventions import HINGES, STATE_NAMES
+from ..methods.sampling import unit_sphere_points
 from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
-__all__ = ["CASES", "Case", "CaseResult", "LargeDisturbances", "figure_reach", "figure_slices",
-           "large_disturbances"]
+__all__ = ["ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "CASES", "Case", "CaseResult", "LargeDisturbances",
+           "anatomy", "figure_reach", "figure_slices", "large_disturbances"]
 
 
 @dataclass(frozen=True)
@@ -66,11 +69,17 @@ class Case:
 CASES: tuple[Case, ...] = (
     Case("forward", "forward C.G., hover", ("table_i", "forward"), 0.0, "none"),
     Case("neutral", "neutral C.G., hover", ("table_i", "neutral"), 0.0, "none"),
-    Case("backward", "backward C.G., hover", ("table_i", "backward"), 0.0, "none"),
+    # the backward C.G.'s augmented energy is not reproducible from machine to machine: its design
+    # program works at the edge of feasibility (rounds of counterexamples run out at most start
+    # radii it tries), and a last-bit difference in the floating-point environment moves the
+    # start radius it reaches (README, "What a committed output may print"); its certificate is
+    # attacked in the test run (tests/test_falsifier_designed_backward.py), the chapter shows the
+    # quadratic function's
+    Case("backward", "backward C.G., hover", ("table_i", "backward"), 0.0, "none", "quadratic"),
     Case("mu01", "trimmed, mu = 0.1", ("flight_case", "forward"), 0.1, "propulsive"),
     # the augmented energy's design takes about two minutes of one core in forward flight: the
     # chapter's budget (three minutes on two cores) holds one such case, so mu = 0.2 shows the
-    # quadratic function against its yardstick (the default certify on demand: README)
+    # quadratic function against its yardstick
     Case("mu02", "trimmed, mu = 0.2", ("flight_case", "forward"), 0.2, "propulsive", "quadratic"),
 )
 """The chapter's cases, in the order of its tables."""
@@ -95,6 +104,9 @@ class CaseResult:
         Every function :func:`rotorlyap.certify` tried.
     region : StableRegion
         The yardstick.
+    anatomy : Anatomy or None
+        The designed function of the certificate taken apart (None where the quadratic function
+        certifies).
     """
 
     case: Case
@@ -104,6 +116,7 @@ class CaseResult:
     chosen: str
     candidates: tuple[Candidate, ...]
     region: StableRegion
+    anatomy: Anatomy | None = None
 
     def candidate(self, function: str) -> Candidate | None:
         """The candidate of ``function`` (None if not tried)."""
@@ -139,15 +152,81 @@ class CaseResult:
         return met, (float(above.min()) if above.size else math.nan)
 
 
+#: Radii, in multiples of the certified bound ``A``, at which :class:`Anatomy` samples ``W'``.
+ANATOMY_RADII: tuple[float, ...] = (1.0, 1.25, 1.5, 2.0)
+#: Sampled directions per radius (a power of two for the Sobol' points, which add the 72 structured
+#: ones; in forward flight each at a random azimuth).
+ANATOMY_SAMPLES = 16_384
+
+
+@dataclass(frozen=True)
+class Anatomy:
+    """A designed function taken apart: how much of it is the energy, and where ``W'`` turns positive.
+
+    Attributes
+    ----------
+    energy_share : float
+        The energy term's part of ``W`` on the start sphere ``lambda0`` (mean over the sample), -.
+    radii : tuple of float
+        Multiples of the certified bound ``A`` sampled (:data:`ANATOMY_RADII`).
+    max_dw : tuple of float
+        Largest ``W'`` found at each radius (level 1 at the designed bound), per rad.
+    energy_dw : tuple of float
+        The energy term's part of ``W'`` at that state.
+    positive_fraction : tuple of float
+        Fraction of the sample with ``W' >= 0``.
+    direction : tuple of tuple
+        The state of the largest ``W'`` over its radius, scaled coordinates (a unit vector).
+    """
+
+    energy_share: float
+    radii: tuple[float, ...]
+    max_dw: tuple[float, ...]
+    energy_dw: tuple[float, ...]
+    positive_fraction: tuple[float, ...]
+    direction: tuple[tuple[float, ...], ...]
+
+
+def _clean(value: float, floor: float = 1e-9) -> float:
+    """``value`` as a float, 0.0 below ``floor`` in magnitude (no round-off, no negative zero)."""
+    return float(value) if abs(value) >= floor else 0.0
+
+
+def anatomy(fun, A: float, lam0: float, *, samples: int = ANATOMY_SAMPLES, seed: int = 0) -> Anatomy:
+    """Sample a designed function (:class:`rotorlyap.analysis.nonlinear_functions.DesignedFunction`
+    of the ``"energy"`` family) on the start sphere and on spheres beyond its certified bound ``A``."""
+    bf = fun.function
+    basis, c, a = bf.basis, bf.coefficients, fun.scales
+    u = unit_sphere_points(a.size, samples, seed)
+    psi = (np.zeros(u.shape[0]) if fun.autonomous
+           else np.random.default_rng(seed).uniform(0.0, 2 * np.pi, u.shape[0]))
+    V = basis.values(psi, lam0 * u * a)
+    share = _clean(np.mean(V[:, 0] * c[0]) / np.mean(V @ c))
+    max_dw, energy_dw, positive, direction = [], [], [], []
+    for k in ANATOMY_RADII:
+        R = basis.rates(psi, k * A * u * a)
+        dw = R @ c
+        i = int(np.argmax(dw))
+        max_dw.append(_clean(dw[i]))
+        energy_dw.append(_clean(R[i, 0] * c[0]))
+        positive.append(float(np.mean(dw >= 0.0)))
+        direction.append(tuple(float(v) for v in u[i]))
+    return Anatomy(share, ANATOMY_RADII, tuple(max_dw), tuple(energy_dw), tuple(positive), tuple(direction))
+
+
 def _compute(task: tuple[str, Case]):
     """One task of a worker process: ``("certificate", case)`` or ``("region", case)``."""
     kind, case = task
     if kind == "region":
         return stable_region(case.params(), case.mu, condition=case.condition)
     cert = certify(case.params(), case.mu, condition=case.condition, function=case.function)
+    parts = (anatomy(cert.lyapunov, cert.bound, cert.start_region)
+             if cert.function == "energy" and cert.certified else None)
     return (cert.trim.params.rotor_speed, np.asarray(cert.scales, dtype=float), cert.growth_rate, cert.function,
-            tuple(cert.candidates))
+            tuple(cert.candidates), parts)
 
+
+_HINGE_WORDS = ("flap angle", "lag angle", "pitch angle", "flap rate", "lag rate", "pitch rate")
 
 _NAMES = {"energy": "augmented energy", "quadratic": "quadratic function", "polynomial": "polynomial function"}
 
@@ -195,6 +274,14 @@ class LargeDisturbances:
                 if c.tried:
                     best, fail = r.limit(c.function)
                     out.append(f"    designed for lambda = {_sig(best):g}; the program did not meet {_sig(fail):g}")
+            if r.anatomy is not None:
+                an = r.anatomy
+                out.append(f"    energy's part of W on the start sphere: {_sig(100 * an.energy_share):g} %")
+                for k, m, e, fr, d in zip(an.radii, an.max_dw, an.energy_dw, an.positive_fraction, an.direction):
+                    top = np.argsort(-np.abs(d))[:2]
+                    out.append(f"    at {k:g} A: max W' {_sig(m):g} (energy's part {_sig(e):g}), W' >= 0 on "
+                               f"{_sig(100 * fr):g} % of the sphere, along "
+                               + " and ".join(f"{STATE_NAMES[j]} {d[j]:+.1f}" for j in top))
             sim = r.simulated
             cap = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
             out.append("  simulated (deg, deg/s): " + ", ".join(
@@ -218,6 +305,15 @@ class LargeDisturbances:
                 f[f"ch11_{k}_e_reach"] = _sig(100 * np.nanmin(r.reach("energy")))
                 f[f"ch11_{k}_gain"] = _sig(e.start_region / q.start_region)
                 gains.append(e.start_region / q.start_region)
+                if r.anatomy is not None:
+                    an = r.anatomy
+                    f[f"ch11_{k}_energy_share"] = _sig(100 * an.energy_share)
+                    first = next((kk for kk, m in zip(an.radii, an.max_dw) if m >= 0), math.nan)
+                    f[f"ch11_{k}_positive_at"] = first
+                    if math.isfinite(first):
+                        d = np.asarray(an.direction[an.radii.index(first)])
+                        top = np.argsort(-np.abs(d))[:2]
+                        f[f"ch11_{k}_positive_along"] = " and ".join(_HINGE_WORDS[j] for j in top)
                 best, fail = r.limit("energy")
                 f[f"ch11_{k}_e_A"] = _sig(e.bound)
                 f[f"ch11_{k}_e_met"] = _sig(best)
@@ -264,8 +360,8 @@ def large_disturbances(cases=CASES, *, workers: int | None = None) -> LargeDistu
     out = {tasks[i]: v for i, v in zip(order, done)}
     results = []
     for c in cases:
-        omega, scales, growth, chosen, candidates = out[("certificate", c)]
-        results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)]))
+        omega, scales, growth, chosen, candidates, parts = out[("certificate", c)]
+        results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts))
     return LargeDisturbances(tuple(results))
 
 
