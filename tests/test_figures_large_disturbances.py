@@ -86,3 +86,30 @@ def test_the_limit_is_read_from_the_design_the_certificate_rests_on():
     assert np.isnan(_result(((0.8, 2.0, True),)).limit("energy")[1])
     # the last attempt failed: the design was not made
     assert all(np.isnan(_result(((0.8, 2.0, False),)).limit("energy")))
+
+
+def test_anatomy_measures_the_energy_share_and_the_sign_of_w_dot_beyond_the_bound():
+    """A made-up function of two basis functions, "energy" = |y|^2 and y_0^2 (coefficients 1, 1),
+    along y' = -y + y^3: W' = sum 2 y_i^2 (y_i^2 - 1) + 2 y_0^2 (y_0^2 - 1). On the sphere
+    |y| = r the mean of y_0^2 is r^2 / 6, so the energy's share of W is 6 / 7; W' < 0 wherever
+    every |y_i| < 1 (so on the sphere 0.9), and on the sphere 1.125 it is largest along y_0."""
+
+    from types import SimpleNamespace
+
+    from rotorlyap.methods.scenario import Basis, BasisFunction
+
+    a = np.ones(6)
+
+    def f(psi, x):
+        return -x + x ** 3
+
+    basis = Basis(("energy", "y0^2"),
+                  lambda psi, x: np.column_stack([np.sum(x * x, axis=1), x[:, 0] ** 2]),
+                  lambda psi, x: np.column_stack([np.sum(2 * x * f(psi, x), axis=1), 2 * x[:, 0] * f(psi, x)[:, 0]]))
+    fun = SimpleNamespace(function=BasisFunction(basis, np.array([1.0, 1.0]), f), scales=a, autonomous=True)
+    an = chapter.anatomy(fun, A=0.9, lam0=0.5, samples=1024)
+    assert an.energy_share == pytest.approx(6 / 7, rel=0.02)
+    assert an.max_dw[0] < 0 and an.positive_fraction[0] == 0.0  # radius 1 A = 0.9
+    k = chapter.ANATOMY_RADII.index(1.25)  # radius 1.125
+    assert an.max_dw[k] > 0 and abs(an.direction[k][0]) > 0.9
+    assert an.energy_dw[k] > 0  # |y|^2 grows there too (the "energy" term is the whole |y|^2)
