@@ -100,7 +100,7 @@ class CaseResult:
         Largest real part of the Floquet exponents, per rev.
     chosen : str
         The function of the default certificate (``"quadratic"`` or ``"energy"``).
-    candidates : tuple of Candidate
+    candidates : tuple of rotorlyap.analysis.certify.Candidate
         Every function :func:`rotorlyap.certify` tried.
     region : StableRegion
         The yardstick.
