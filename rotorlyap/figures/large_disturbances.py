@@ -197,6 +197,9 @@ def anatomy(fun, A: float, lam0: float, *, samples: int = ANATOMY_SAMPLES, seed:
     of the ``"energy"`` family) on the start sphere and on spheres beyond its certified bound ``A``."""
     bf = fun.function
     basis, c, a = bf.basis, bf.coefficients, fun.scales
+    if basis.names[0] != "energy":
+        raise ValueError(f"anatomy takes a function of the 'energy' family (its first basis function the "
+                         f"energy), got one whose first basis function is {basis.names[0]!r}")
     u = unit_sphere_points(a.size, samples, seed)
     psi = (np.zeros(u.shape[0]) if fun.autonomous
            else np.random.default_rng(seed).uniform(0.0, 2 * np.pi, u.shape[0]))
