@@ -17,19 +17,33 @@ quadratic Liapunov function of the linearised blade about its steady motion, the
   fixed slopes ``sigma`` the equations are smooth in the state, so
   ``J(t x; sigma) - J(0; sigma)`` lies in ``H t x``, whose average over ``t`` is ``H x / 2``;
   the true slopes at ``t x`` lie in the hulls, so ``J(0; sigma)`` lies in the first term.
+
+:func:`prove_designed` runs the same proof for a designed function of
+:mod:`rotorlyap.analysis.nonlinear_functions` that is a quadratic form in hover
+(:func:`designed_quadratic_form`). :func:`enclosure_width` measures what limits both: the balls of
+the Jacobian over a box about the equilibrium against the Jacobian of the float model sampled in
+it (chapter 11: for the Table I blade the balls are some hundreds of times wider than the
+variation, in the inertial terms of the pitch equation, at every size of box).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass, replace
+
 import numpy as np
 
+from ..conventions import DEFAULT_SCALES, STATE_NAMES
 from ..methods import intervals as iv
 from ..methods.proof import Proof, lyapunov_enclosure, prove_quadratic
+from ..model.blade import Blade
+from ..model.steady import TabulatedMotion, as_steady_motion
 from .enclosure import BladeEnclosure
-from ..model.steady import TabulatedMotion
 from .functions import QuadraticFunction
 
-__all__ = ["BladeProofSystem", "proof_problem", "prove_blade"]
+_STATE_INDEX = {name: i for i, name in enumerate(STATE_NAMES)}
+
+__all__ = ["BladeProofSystem", "EnclosureWidth", "designed_quadratic_form", "enclosure_width", "proof_problem",
+           "prove_blade", "prove_designed"]
 
 
 def _spread(balls: np.ndarray, blocked: dict, rep: int):
@@ -162,3 +176,180 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
     """
     system, quadratic, N = proof_problem(fun, n_intervals=n_intervals, n_coarse=n_coarse)
     return prove_quadratic(system, quadratic, A, scales=fun.scales, n_intervals=N, n_bisect=n_bisect)
+
+
+def designed_quadratic_form(fun) -> np.ndarray:
+    """The matrix ``S`` of a designed function that is a quadratic form of the scaled state.
+
+    A :class:`~rotorlyap.analysis.nonlinear_functions.DesignedFunction` is a combination of basis
+    functions; where every term but the constant quadratic monomials has the weight exactly 0 (the
+    augmented energy of the Table I forward C.G. in hover: the program gives the energy no
+    weight), ``W = y^T S y`` with ``y = x / a`` exactly, ``S_ii`` the weight of ``y_i^2`` and
+    ``S_ij = S_ji`` half the weight of ``y_i y_j``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (6, 6)
+        ``S`` (dimensionless; ``W = 1`` on the designed level).
+
+    Raises
+    ------
+    ValueError
+        A function with a nonzero weight on any other term (the energy, a harmonic of the azimuth,
+        a cubic or quartic monomial): the proof encloses quadratic forms only.
+    """
+    bf = fun.function
+    S = np.zeros((6, 6))
+    others = []
+    for name, c in zip(bf.basis.names, bf.coefficients):
+        parts = name.split("*")
+        factors = []
+        for p in parts:
+            var, _, power = p.partition("^")
+            factors += [var] * (int(power) if power else 1)
+        idx = [_STATE_INDEX.get(v) for v in factors]
+        if len(idx) == 2 and None not in idx:
+            i, j = sorted(idx)
+            if i == j:
+                S[i, i] = c
+            else:
+                S[i, j] = S[j, i] = 0.5 * c
+        elif c != 0.0:
+            others.append(f"{name} ({c:.3g})")
+    if others:
+        raise ValueError("the proof encloses quadratic forms of the scaled state; this function has nonzero "
+                         "weights on " + ", ".join(others[:4]) + (" ..." if len(others) > 4 else ""))
+    return S
+
+
+def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8) -> Proof:
+    """Prove the certificate of a designed function that is a quadratic form (hover).
+
+    The same proof as :func:`prove_blade` (the tube ``|y_i| <= A`` about the equilibrium, one
+    ball matrix ``K`` for all of it), with ``S`` from :func:`designed_quadratic_form`.
+
+    Parameters
+    ----------
+    fun : rotorlyap.analysis.nonlinear_functions.DesignedFunction
+        An autonomous (hover) designed function whose only nonzero weights are on quadratic
+        monomials.
+    A : float, optional
+        The largest bound to prove, scaled norm (default: the design's).
+    n_bisect : int
+        Bisection steps on the bound.
+
+    Returns
+    -------
+    Proof
+
+    Raises
+    ------
+    ValueError
+        A function that is not a quadratic form, or not autonomous.
+    """
+    if not fun.autonomous:
+        raise ValueError("prove_designed proves autonomous (hover) functions; in forward flight the designed "
+                         "coefficients depend on the azimuth")
+    S = designed_quadratic_form(fun)
+    system = BladeProofSystem(fun.blade, fun.steady)
+
+    def quadratic(N: int):
+        balls = iv.balls(np.broadcast_to(S, (N, 6, 6)))
+        return balls, iv.zeros(balls.shape)
+
+    bound = float(fun.design.A if A is None else A)
+    return prove_quadratic(system, quadratic, bound, scales=fun.scales, n_intervals=1, n_bisect=n_bisect)
+
+
+@dataclass(frozen=True)
+class EnclosureWidth:
+    """How wide the ball enclosure of the Jacobian is, against how much the Jacobian varies.
+
+    Over the box ``|x_i| <= bound a_i`` about a constant steady motion (hover), in the scaled
+    coordinates ``y = x / a`` (entries ``J_ij a_j / a_i``, per rad of azimuth).
+
+    Attributes
+    ----------
+    bound : float
+        Half-width of the box, scaled norm.
+    radius : numpy.ndarray, shape (6, 6)
+        Radius of the enclosure's ball of each entry (:meth:`BladeEnclosure.evaluate`).
+    variation : numpy.ndarray, shape (6, 6)
+        Largest ``|J(x) - J(0)|`` over the sampled states of the box (the float model's
+        Jacobian): a lower bound of the true variation.
+    contained : bool
+        Every sampled Jacobian lies in the enclosure (to the finite differences' error).
+    entry : tuple of int
+        ``(i, j)`` of the widest enclosure.
+    """
+
+    bound: float
+    radius: np.ndarray
+    variation: np.ndarray
+    contained: bool
+    entry: tuple
+
+    def __repr__(self) -> str:  # short and stable: no arrays
+        return (f"EnclosureWidth(bound={self.bound:g}, radius <= {self.radius.max():.3g}, "
+                f"variation >= {self.variation.max():.3g}, contained={self.contained})")
+
+    @property
+    def ratio(self) -> float:
+        """The widest enclosure radius over the largest sampled variation (>= the overestimate)."""
+        return float(self.radius.max() / self.variation.max())
+
+
+def enclosure_width(blade, steady=None, bound: float = 0.1, *, scales=None, samples: int = 256, seed: int = 0,
+                    aerodynamics: bool = True) -> EnclosureWidth:
+    """Measure the ball enclosure of the blade's Jacobian against the Jacobian itself.
+
+    Parameters
+    ----------
+    blade : Blade
+        The blade in hover.
+    steady : optional
+        A constant steady motion (default: the hover equilibrium).
+    bound : float
+        Half-width of the box, scaled norm (> 0).
+    scales : array_like, optional
+        The norm's ``a_i`` (default :data:`rotorlyap.conventions.DEFAULT_SCALES`).
+    samples : int
+        Random states of the box (the 64 corners are added).
+    seed : int
+        Seed of the sample.
+    aerodynamics : bool
+        False encloses the blade without its air loads (the inertial, spring and damper terms).
+
+    Returns
+    -------
+    EnclosureWidth
+    """
+    if not (np.isfinite(bound) and bound > 0):
+        raise ValueError(f"bound must be a finite number > 0, got {bound!r}")
+    a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
+    steady = as_steady_motion(steady, blade)
+    if not steady.is_constant:
+        raise ValueError("enclosure_width measures a constant steady motion (hover)")
+    model = blade if aerodynamics else _without_air(blade)
+    enc = BladeEnclosure(model, steady)
+    ev = enc.evaluate(1, radius=bound * a)
+    scale = a[None, :] / a[:, None]
+    lo = np.array([[float(b.lower()) for b in row] for row in ev.jacobian[0]])
+    hi = np.array([[float(b.upper()) for b in row] for row in ev.jacobian[0]])
+    radius = 0.5 * (hi - lo) * scale
+    rng = np.random.default_rng(seed)
+    corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * 6, indexing="ij")).reshape(6, -1).T
+    y = np.vstack([corners, rng.uniform(-1.0, 1.0, (int(samples), 6))]) * bound
+    z = steady.state + y * a
+    J = model.jacobian(np.zeros(z.shape[0]), z)
+    J0 = model.jacobian(np.zeros(1), steady.state[None])[0]
+    variation = np.max(np.abs(J - J0), axis=0) * scale
+    slack = 1e-6 * (np.abs(J) + 1.0)
+    contained = bool(np.all((J >= lo - slack) & (J <= hi + slack)))
+    entry = tuple(int(k) for k in np.unravel_index(np.argmax(radius), radius.shape))
+    return EnclosureWidth(float(bound), radius, variation, contained, entry)
+
+
+def _without_air(blade):
+    """The blade with its air loads switched off (density zero)."""
+    return Blade(replace(blade.params, air_density=0.0), blade.mu)

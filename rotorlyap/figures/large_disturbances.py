@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..analysis.certify import Candidate, certify
+from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
 from ..analysis.region import StableRegion, stable_region
 from ..analysis.sweep import process_map
 from ..conventions import HINGES, STATE_NAMES
@@ -30,7 +31,8 @@ from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
 __all__ = ["ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "CASES", "Case", "CaseResult", "LargeDisturbances",
-           "anatomy", "figure_reach", "figure_slices", "large_disturbances"]
+           "ProofLimit", "WIDTH_BOUNDS", "anatomy", "figure_reach", "figure_slices", "large_disturbances",
+           "proof_limit"]
 
 
 @dataclass(frozen=True)
@@ -107,6 +109,9 @@ class CaseResult:
     anatomy : Anatomy or None
         The designed function of the certificate taken apart (None where the quadratic function
         certifies).
+    proof : ProofLimit or None
+        The proof of the designed function and what limits it (:func:`proof_limit`; None where
+        the certificate's function is not a quadratic form in hover).
     """
 
     case: Case
@@ -117,6 +122,7 @@ class CaseResult:
     candidates: tuple[Candidate, ...]
     region: StableRegion
     anatomy: Anatomy | None = None
+    proof: ProofLimit | None = None
 
     def candidate(self, function: str) -> Candidate | None:
         """The candidate of ``function`` (None if not tried)."""
@@ -217,19 +223,79 @@ def anatomy(fun, A: float, lam0: float, *, samples: int = ANATOMY_SAMPLES, seed:
     return Anatomy(share, ANATOMY_RADII, tuple(max_dw), tuple(energy_dw), tuple(positive), tuple(direction))
 
 
+#: Half-widths of the boxes about the equilibrium (scaled norm) on which :func:`proof_limit` measures
+#: the enclosure of the Jacobian: the size of the tube the proof works in (a fifth of a degree of
+#: flap), and a tenth of it.
+WIDTH_BOUNDS = (0.1, 0.01)
+
+
+@dataclass(frozen=True)
+class ProofLimit:
+    """The ball-arithmetic proof of a designed quadratic form and what limits it.
+
+    Attributes
+    ----------
+    A : float
+        The proved bound, scaled norm (0: nothing proved).
+    lambda0 : float
+        The proved start radius, scaled norm.
+    widths : tuple of rotorlyap.analysis.proof.EnclosureWidth
+        The enclosure of the Jacobian on the boxes of half-widths :data:`WIDTH_BOUNDS` against the
+        sampled Jacobian.
+    width_without_air : rotorlyap.analysis.proof.EnclosureWidth
+        The same for the blade without air loads, on the first box.
+    """
+
+    A: float
+    lambda0: float
+    widths: tuple[EnclosureWidth, ...]
+    width_without_air: EnclosureWidth
+
+    @property
+    def width(self) -> EnclosureWidth:
+        """The enclosure on the first (largest) box."""
+        return self.widths[0]
+
+
+def proof_limit(fun) -> ProofLimit:
+    """Prove a designed hover function that is a quadratic form (:func:`rotorlyap.analysis.proof.prove_designed`)
+    and measure the enclosure of the blade's Jacobian it rests on (:func:`rotorlyap.analysis.proof.enclosure_width`)."""
+    proof = prove_designed(fun)
+    widths = tuple(enclosure_width(fun.blade, fun.steady, b, scales=fun.scales) for b in WIDTH_BOUNDS)
+    dry = enclosure_width(fun.blade, fun.steady, WIDTH_BOUNDS[0], scales=fun.scales, aerodynamics=False)
+    return ProofLimit(proof.A, proof.min_lambda0, widths, dry)
+
+
+def _is_quadratic_form(fun) -> bool:
+    try:
+        designed_quadratic_form(fun)
+    except ValueError:
+        return False
+    return True
+
+
 def _compute(task: tuple[str, Case]):
     """One task of a worker process: ``("certificate", case)`` or ``("region", case)``."""
     kind, case = task
     if kind == "region":
         return stable_region(case.params(), case.mu, condition=case.condition)
     cert = certify(case.params(), case.mu, condition=case.condition, function=case.function)
-    parts = (anatomy(cert.lyapunov, cert.bound, cert.start_region)
-             if cert.function == "energy" and cert.certified else None)
+    designed = cert.function == "energy" and cert.certified
+    parts = anatomy(cert.lyapunov, cert.bound, cert.start_region) if designed else None
+    proof = (proof_limit(cert.lyapunov)
+             if designed and cert.lyapunov.autonomous and _is_quadratic_form(cert.lyapunov) else None)
     return (cert.trim.params.rotor_speed, np.asarray(cert.scales, dtype=float), cert.growth_rate, cert.function,
-            tuple(cert.candidates), parts)
+            tuple(cert.candidates), parts, proof)
 
 
 _HINGE_WORDS = ("flap angle", "lag angle", "pitch angle", "flap rate", "lag rate", "pitch rate")
+
+def _entry_words(entry: tuple) -> str:
+    """``(i, j)`` of the Jacobian in words: the rate of state ``i`` with respect to state ``j``."""
+    i, j = entry
+    what = ("flap rate", "lag rate", "pitch rate", "flap acceleration", "lag acceleration", "pitch acceleration")[i]
+    return f"the {what} against the {_HINGE_WORDS[j]}"
+
 
 _NAMES = {"energy": "augmented energy", "quadratic": "quadratic function", "polynomial": "polynomial function"}
 
@@ -285,6 +351,15 @@ class LargeDisturbances:
                     out.append(f"    at {k:g} A: max W' {_sig(m):g} (energy's part {_sig(e):g}), W' >= 0 on "
                                f"{_sig(100 * fr):g} % of the sphere, along "
                                + " and ".join(f"{STATE_NAMES[j]} {d[j]:+.1f}" for j in top))
+            if r.proof is not None:
+                pl = r.proof
+                out.append(f"    proved (ball arithmetic, one tube): A = {_sig(pl.A):g}, lambda0 = {_sig(pl.lambda0):g}; "
+                           f"Jacobian enclosure on |y_i| <= {pl.width.bound:g}: radius up to "
+                           f"{_sig(pl.width.radius.max()):g} ({_sig(pl.width_without_air.radius.max()):g} without air "
+                           f"loads), sampled variation {_sig(pl.width.variation.max()):g}, contains the sample: "
+                           f"{pl.width.contained}; on |y_i| <= {pl.widths[-1].bound:g}: radius up to "
+                           f"{_sig(pl.widths[-1].radius.max()):g}, sampled variation "
+                           f"{_sig(pl.widths[-1].variation.max()):g}")
             sim = r.simulated
             cap = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
             out.append("  simulated (deg, deg/s): " + ", ".join(
@@ -321,6 +396,23 @@ class LargeDisturbances:
                 f[f"ch11_{k}_e_A"] = _sig(e.bound)
                 f[f"ch11_{k}_e_met"] = _sig(best)
                 f[f"ch11_{k}_e_fail"] = _sig(fail)
+            if r.proof is not None:
+                pl = r.proof
+                f[f"ch11_{k}_proof_A"] = _sig(pl.A)
+                f[f"ch11_{k}_proof_flap"] = _sig(r.per_component(pl.lambda0)[0])
+                f[f"ch11_{k}_proof_share"] = _sig(100 * pl.lambda0 / e.start_region)
+                w, dry = pl.width, pl.width_without_air
+                f["ch11_width_bound"] = _sig(w.bound)
+                f["ch11_width_bound_flap"] = _sig(r.per_component(w.bound)[0])
+                f["ch11_width_radius"] = _sig(w.radius.max())
+                f["ch11_width_variation"] = _sig(w.variation.max())
+                f["ch11_width_ratio"] = _sig(w.ratio)
+                f["ch11_width_radius_dry"] = _sig(dry.radius.max())
+                f["ch11_width_entry"] = _entry_words(w.entry)
+                small = pl.widths[-1]
+                f["ch11_width_small_bound"] = _sig(small.bound)
+                f["ch11_width_small_radius"] = _sig(small.radius.max())
+                f["ch11_width_small_ratio"] = _sig(small.ratio)
             f[f"ch11_{k}_q_A"] = _sig(q.bound)
             f[f"ch11_{k}_growth"] = _sig(r.growth_rate)
         if gains:
@@ -363,8 +455,8 @@ def large_disturbances(cases=CASES, *, workers: int | None = None) -> LargeDistu
     out = {tasks[i]: v for i, v in zip(order, done)}
     results = []
     for c in cases:
-        omega, scales, growth, chosen, candidates, parts = out[("certificate", c)]
-        results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts))
+        omega, scales, growth, chosen, candidates, parts, proof = out[("certificate", c)]
+        results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts, proof))
     return LargeDisturbances(tuple(results))
 
 
