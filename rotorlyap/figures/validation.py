@@ -33,6 +33,7 @@ the advancing side; growth rates and frequencies per rev.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -455,13 +456,20 @@ class FoldData:
         return "\n".join([
             f"{self.case} C.G., mu = {self.mu:g}: mean lag {self.mean_lag_deg:.2f} deg, largest real "
             f"multiplier {self.largest_real_multiplier:.4f}",
-            _join(f"{self.case} C.G., mu = {self.fail_mu:g}:", self.fail_message),
+            _join(f"{self.case} C.G., mu = {self.fail_mu:g}:", _without_stalled_residual(self.fail_message)),
             "hover equilibrium: mean lag %.2f deg" % self.hover_lag_deg,
         ])
 
     def facts(self) -> dict:
         """The largest real multiplier, three decimals."""
         return {"ch7_fold_0": round(float(self.largest_real_multiplier), 3)}
+
+
+def _without_stalled_residual(message: str) -> str:
+    """A failed solver's message without the residual it stalled at: that number is set by the
+    rounding of the last iterations (1e-04 here, 2e-04 in another floating-point environment),
+    not by the computation, so the book does not print it."""
+    return re.sub(r"residual \S+ after", "residual above the tolerance after", message)
 
 
 def fold_data(motions: SteadyMotions, case: str = "backward", mu: float = 0.005, fail_mu: float = 0.01) -> FoldData:
@@ -1368,8 +1376,11 @@ class RuleChanges:
 
     #: A bound or start region that moves by more than this (relative) counts as changed: both
     #: rules find their bounds by searches and a bisection, which do not determine them to the
-    #: last digit (another floating-point environment moved a paper-rule bound by 0.3 %).
-    RTOL = 0.02
+    #: last digit. Measured: another floating-point environment (the perturbed one of ``.ci/run``)
+    #: moves the paper rule's bound for the neutral C.G. at mu = 0.2 by 2.6 % (0.279 and 0.286),
+    #: where the sound rule's stays within 0.01 %; the threshold is set well above that, so that
+    #: which cells count as changed does not depend on the machine.
+    RTOL = 0.10
 
     def changed(self) -> np.ndarray:
         """Boolean (r, m): the azimuth count differs, or ``A`` or the smallest ``lambda0`` by more
