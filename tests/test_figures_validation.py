@@ -342,7 +342,8 @@ def test_scan_figure_has_a_panel_per_candidate_and_case_and_is_closed(scan):
 
 def test_rule_changes_list_the_cells_whose_verdict_or_bounds_moved():
     """A cell changes when its azimuth count differs or A or the smallest lambda0 moves by more
-    than 2 % (what the searches determine); cells without a result (-1) never count."""
+    than 10 % (well beyond the 2.6 % by which another floating-point environment moves the paper
+    rule's bound); cells without a result (-1) never count."""
     nan = np.nan
     d = fv.RuleChanges(labels=("quadratic Q = I, forward C.G.", "quadratic Q = I, backward C.G."),
                        mu_values=np.array([0.0, 0.2]), n_paper=np.array([[24, 24], [24, 8]]),
@@ -353,11 +354,11 @@ def test_rule_changes_list_the_cells_whose_verdict_or_bounds_moved():
     np.testing.assert_array_equal(d.changed(), [[False, False], [True, True]])
     assert d.rows()[0][3] == "0.048 -> 0.043"
     near = fv.RuleChanges(labels=("x",), mu_values=np.array([0.1]), n_paper=np.array([[24]]),
-                          n_sound=np.array([[24]]), A_paper=np.array([[0.306]]), A_sound=np.array([[0.305]]),
-                          lambda0_paper=np.array([[0.0297]]), lambda0_sound=np.array([[0.0294]]), n_psi=24)
-    assert not near.changed().any()  # 0.3 % and 1 %: within what the searches determine
+                          n_sound=np.array([[24]]), A_paper=np.array([[0.286]]), A_sound=np.array([[0.275]]),
+                          lambda0_paper=np.array([[0.0314]]), lambda0_sound=np.array([[0.0301]]), n_psi=24)
+    assert not near.changed().any()  # 3.8 % and 4.1 %: within what the searches determine
     assert d.rows()[1] == ("quadratic Q = I, backward C.G.", "0.2", "8 -> 0", "0.30 -> 0", "0.010 -> -")
-    assert d.facts() == {"ch7_rule_changed": 2, "ch7_rule_cells": 4, "ch7_rule_rtol_pct": 2.0, "ch7_rule_lost": 1,
+    assert d.facts() == {"ch7_rule_changed": 2, "ch7_rule_cells": 4, "ch7_rule_rtol_pct": 10.0, "ch7_rule_lost": 1,
                          "ch7_rule_gained": 0}
     assert d.summary().splitlines()[-1] == ("changed: 2 of 4 cells; certified by the paper's rule only: 1; "
                                             "never the reverse: True")
