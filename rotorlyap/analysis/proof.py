@@ -334,8 +334,7 @@ def enclosure_width(blade, steady=None, bound: float = 0.1, *, scales=None, samp
     enc = BladeEnclosure(model, steady)
     ev = enc.evaluate(1, radius=bound * a)
     scale = a[None, :] / a[:, None]
-    lo = np.array([[float(b.lower()) for b in row] for row in ev.jacobian[0]])
-    hi = np.array([[float(b.upper()) for b in row] for row in ev.jacobian[0]])
+    lo, hi = iv.lower(ev.jacobian[0]), iv.upper(ev.jacobian[0])
     radius = 0.5 * (hi - lo) * scale
     rng = np.random.default_rng(seed)
     corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * 6, indexing="ij")).reshape(6, -1).T

@@ -288,12 +288,13 @@ def _compute(task: tuple[str, Case]):
             tuple(cert.candidates), parts, proof)
 
 
-_HINGE_WORDS = ("flap angle", "lag angle", "pitch angle", "flap rate", "lag rate", "pitch rate")
+_HINGE_WORDS = tuple(f"{h} angle" for h in HINGES) + tuple(f"{h} rate" for h in HINGES)
+
 
 def _entry_words(entry: tuple) -> str:
-    """``(i, j)`` of the Jacobian in words: the rate of state ``i`` with respect to state ``j``."""
+    """``(i, j)`` of the Jacobian in words: the rate of change of state ``i`` against state ``j``."""
     i, j = entry
-    what = ("flap rate", "lag rate", "pitch rate", "flap acceleration", "lag acceleration", "pitch acceleration")[i]
+    what = f"{HINGES[i % 3]} {'rate' if i < 3 else 'acceleration'}"
     return f"the {what} against the {_HINGE_WORDS[j]}"
 
 
