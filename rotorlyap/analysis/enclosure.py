@@ -89,42 +89,80 @@ class Evaluation:
 
 
 class _Table:
-    """The airfoil table as a periodic piecewise-linear function of the angle, in balls."""
+    """The airfoil table as a periodic piecewise-linear function of the angle, in balls.
+
+    One lookup gives the three coefficients over an array of angle balls: the segments each
+    ball touches found in floats (outward rounded), the values and slopes over them as the
+    hull of the node values and of the segment slopes (every float difference of two nodes is
+    within one unit in the last place of the exact one); where a ball lies in one segment, the
+    interpolant itself in ball arithmetic."""
+
+    _GATHER = 1 << 22  # node indices gathered at once (memory of a chunk of wide balls)
 
     def __init__(self, rows: np.ndarray):
         self.n = rows.shape[0]
         self.nodes = [np.append(rows[:, 2 * c], rows[0, 2 * c]) for c in range(3)]  # periodic closure
         diff = [np.diff(v) for v in self.nodes]
-        # every float difference is within one unit in the last place of the exact one
         self.d_lo = [np.nextafter(d, -np.inf) for d in diff]
         self.d_hi = [np.nextafter(d, np.inf) for d in diff]
         self.fac = arb(self.n) / _TWO_PI  # segments per rad
-        self.lookup = np.frompyfunc(self._lookup, 2, 2)
+        # the hull over the whole period (a ball wider than the period touches every segment)
+        self.whole = [(iv.hull(v.min(), v.max())[()], iv.hull(lo.min(), hi.max())[()] * self.fac)
+                      for v, lo, hi in zip(self.nodes, self.d_lo, self.d_hi)]
 
-    def _lookup(self, alpha: arb, c: int):
-        """(value, slope per rad) balls of coefficient ``c`` over the angle ball ``alpha``."""
-        if not alpha.is_finite():
-            return arb.nan(), arb.nan()
-        n = self.n
-        s = (alpha + _PI) * self.fac
-        lo = math.floor(np.nextafter(float(s.lower()), -np.inf))
-        hi = math.floor(np.nextafter(float(s.upper()), np.inf))
-        v = self.nodes[c]
-        if hi - lo >= n:
-            return iv.hull(v.min(), v.max())[()], iv.hull(self.d_lo[c].min(), self.d_hi[c].max())[()] * self.fac
-        if lo == hi:
-            i = lo % n
-            frac = s - lo
-            dv = arb(float(v[i + 1])) - arb(float(v[i]))
-            return arb(float(v[i])) + frac * dv, dv * self.fac
-        idx = np.arange(lo, hi + 1) % n
-        nodes = np.concatenate([v[idx], v[idx + 1]])
-        return (iv.hull(nodes.min(), nodes.max())[()],
-                iv.hull(self.d_lo[c][idx].min(), self.d_hi[c][idx].max())[()] * self.fac)
+    def lookup(self, alpha: np.ndarray) -> list:
+        """``[(value, slope), ...]`` balls (per rad) of cl, cd and cm over the angle balls ``alpha``."""
+        alpha = np.asarray(alpha, dtype=object)
+        shape, flat = alpha.shape, alpha.reshape(-1)
+        n, m = self.n, flat.size
+        out = [(iv.zeros(m), iv.zeros(m)) for _ in range(3)]
+        finite = np.asarray(_finite(flat), dtype=bool) if m else np.zeros(0, dtype=bool)
+        for val, slope in out:
+            val[~finite] = arb.nan()
+            slope[~finite] = arb.nan()
+        f = np.flatnonzero(finite)
+        s = (flat[f] + _PI) * self.fac
+        lo_f, hi_f = np.floor(iv.lower(s)), np.floor(iv.upper(s))
+        whole = hi_f - lo_f >= n
+        for c, (val, slope) in enumerate(out):
+            val[f[whole]] = self.whole[c][0]
+            slope[f[whole]] = self.whole[c][1]
+        one = ~whole & (lo_f == hi_f)
+        if one.any():  # inside one segment: the interpolant in ball arithmetic
+            lo = lo_f[one]
+            i = lo.astype(np.int64) % n
+            frac = s[one] - lo
+            for c, (val, slope) in enumerate(out):
+                v0 = iv.balls(self.nodes[c][i])
+                dv = iv.balls(self.nodes[c][i + 1]) - v0
+                val[f[one]] = v0 + frac * dv
+                slope[f[one]] = dv * self.fac
+        many = np.flatnonzero(~whole & ~one)
+        start = 0
+        while start < many.size:  # chunks of at most _GATHER gathered nodes
+            span = (hi_f[many[start:]] - lo_f[many[start:]]).astype(np.int64) + 1
+            stop = start + max(1, int(np.searchsorted(np.cumsum(span), self._GATHER)))
+            idx = many[start:stop]
+            k = span[:stop - start]
+            first = lo_f[idx].astype(np.int64)
+            seg_start = np.concatenate([[0], np.cumsum(k)[:-1]])
+            seg = (np.repeat(first, k) + np.arange(k.sum()) - np.repeat(seg_start, k)) % n
+            node_start = np.concatenate([[0], np.cumsum(k + 1)[:-1]])
+            node = (np.repeat(first, k + 1) + np.arange((k + 1).sum()) - np.repeat(node_start, k + 1)) % n
+            for c, (val, slope) in enumerate(out):
+                v = self.nodes[c][node]
+                val[f[idx]] = iv.hull(np.minimum.reduceat(v, node_start), np.maximum.reduceat(v, node_start))
+                slope[f[idx]] = iv.hull(np.minimum.reduceat(self.d_lo[c][seg], seg_start),
+                                        np.maximum.reduceat(self.d_hi[c][seg], seg_start)) * self.fac
+            start = stop
+        return [(val.reshape(shape), slope.reshape(shape)) for val, slope in out]
 
-    def __call__(self, alpha: Jet, c: int, tape: "_Slopes") -> Jet:
-        val, slope = self.lookup(alpha.v, c)
-        return _piecewise_linear(alpha, val, slope, tape)
+    def __call__(self, alpha: Jet, tape: "_Slopes") -> tuple:
+        """cl, cd and cm (Jets) at the angle ``alpha``, their slopes recorded in that order."""
+        return tuple(_piecewise_linear(alpha, val, slope, tape) for val, slope in self.lookup(alpha.v))
+
+
+_finite = np.frompyfunc(lambda b: b.is_finite(), 1, 1)
 
 
 def _angle_value(uz: arb, uy: arb) -> arb:
@@ -318,9 +356,7 @@ class BladeEnclosure:
                                        np.zeros(shape, dtype=bool))[:] |= wind
                 if sc[_TWISTED] != 0.0:
                     alpha = alpha + float(st[_PHI, k])
-                cl = self.table(alpha, 0, tape)
-                cd = self.table(alpha, 1, tape)
-                cm = self.table(alpha, 2, tape)
+                cl, cd, cm = self.table(alpha, tape)
                 pg = 1.0
                 if compressible:
                     mach = Vm * float(sc[_INV_A])

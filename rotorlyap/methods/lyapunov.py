@@ -35,6 +35,7 @@ import numpy as np
 
 from ._checks import positive_float as _positive_float
 from ._checks import positive_int as _positive_int
+from .polish import T_MIN, polish
 from .sampling import Extremum, sphere_extremum, unit_sphere_points
 
 __all__ = ["RULES", "TechnicalStabilityResult", "band_max_dw", "technical_stability",
@@ -849,51 +850,11 @@ def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_
     return value, psi, y
 
 
-T_MIN = 1e-9
-"""Smallest ``t`` of the band's parametrisation ``y = t u`` (``t = 0``, the level set itself,
-would lose the direction ``u``)."""
-
-
 def _polish(fun: Function, start, *, free_psi: bool, maxiter: int = 100):
-    """Local maximisation of ``fun(psi, y)`` (``|y| = t`` in ``[0, 1]``, the direction free) from
-    each start of ``start`` (an Extremum) by L-BFGS-B, with central-difference gradients from
-    one vectorised call per iterate. The variables: ``v`` (the direction ``v / |v|``, free in
-    R^n), ``t`` (bounded) and, if ``free_psi``, ``psi``. Returns (values, psi, y), never worse
-    than the starts."""
-    from scipy.optimize import minimize
-
-    n = start.x.shape[1]
-    values, psis, ys = start.value.copy(), start.psi.copy(), start.x.copy()
-    h = 1e-6
-    for i in range(values.size):
-        t0 = float(np.linalg.norm(ys[i]))
-        if not np.isfinite(values[i]) or t0 == 0.0:
-            continue
-        z0 = np.concatenate([ys[i] / t0, [t0], [psis[i]] if free_psi else []])
-        d = z0.size
-        steps = np.eye(d) * h
-
-        def unpack(Z):
-            v = Z[:, :n]
-            nv = np.linalg.norm(v, axis=1, keepdims=True)
-            ok = np.isfinite(nv) & (nv > 0)  # a step to a zero or overflowing v: the start direction
-            u = np.where(ok, v / np.where(ok, nv, 1.0), z0[None, :n])
-            t = np.clip(np.nan_to_num(Z[:, n], nan=t0), T_MIN, 1.0)  # t > 0: y = t u keeps its direction
-            p = np.nan_to_num(Z[:, n + 1], nan=psis[i]) if free_psi else np.full(Z.shape[0], psis[i])
-            return p, u * t[:, None]
-
-        def fg(z):
-            Z = np.vstack([z, z + steps, z - steps])
-            v = np.asarray(fun(*unpack(Z)), dtype=float)
-            return -v[0], -(v[1:d + 1] - v[d + 1:]) / (2 * h)
-
-        bounds = [(None, None)] * n + [(T_MIN, 1.0)] + ([(None, None)] if free_psi else [])
-        res = minimize(fg, z0, jac=True, method="L-BFGS-B", bounds=bounds,
-                       options={"maxiter": maxiter})
-        if np.isfinite(res.fun) and -res.fun > values[i]:
-            p, y = unpack(res.x[None, :])
-            values[i], psis[i], ys[i] = -res.fun, p[0], y[0]
-    return values, psis, ys
+    """Local maximisation of ``fun(psi, y)`` (``|y| = t`` in ``[T_MIN, 1]``, the direction free)
+    from every start of ``start`` (an Extremum) at once: :func:`rotorlyap.methods.polish.polish`.
+    Returns (values, psi, y), never worse than the starts."""
+    return polish(fun, start, free_psi=free_psi, maxiter=maxiter)
 
 
 def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_shells, n_bisect,

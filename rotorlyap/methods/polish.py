@@ -1,0 +1,228 @@
+"""Local maximisation of many starts at once: the polish of the searches for ``W'``.
+
+The searches of :mod:`rotorlyap.methods.lyapunov` end by polishing their best candidates: a
+local maximisation of ``fun(psi, y)`` over a ray parameter ``y = t u`` (``u`` a unit direction,
+``t`` in ``[T_MIN, 1]``) and, when the azimuth is free, over ``psi`` too. Polished one start at
+a time by scipy's L-BFGS-B (:func:`polish_scipy`), each iterate is one small call of ``fun``
+(``2 d + 1`` states for the value and its central-difference gradient in ``d`` variables),
+whose fixed cost dominates: 64 starts of a blade's ``W'`` took about 0.3 s, mostly call
+overhead of the compiled model (measured, ``benchmarks/bench_speed.py``).
+
+:func:`polish` moves every start together: one call of ``fun`` per iteration evaluates the
+value and gradient of all of them. The method is a projected quasi-Newton ascent (BFGS on
+each start's own ``d x d`` inverse Hessian, the bound of ``t`` handled by an active set as
+L-BFGS-B handles it, a backtracking Armijo line search whose trial point carries its
+gradient), with the stopping rules of L-BFGS-B (projected gradient ``<= gtol``, relative
+change of the value ``<= ftol``, ``maxiter`` iterations). Each start moves independently:
+the result of a start does not depend on the others (up to the rounding of a batched
+evaluation of ``fun``).
+
+Both functions return the starts' values where the polish does not improve them: never
+worse than the starts.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+__all__ = ["T_MIN", "polish", "polish_scipy"]
+
+T_MIN = 1e-9
+"""Smallest ``t`` of the band's parametrisation ``y = t u`` (``t = 0``, the level set itself,
+would lose the direction ``u``)."""
+
+_H = 1e-6          # central-difference step of every variable
+_FTOL = 2.220446049250313e-09  # L-BFGS-B's default factr * eps: relative change of the value
+_GTOL = 1e-5       # L-BFGS-B's default pgtol: largest projected gradient component
+_ARMIJO = 1e-4     # sufficient increase of the line search
+_MAX_HALVINGS = 30
+
+
+def _valid_starts(start) -> np.ndarray:
+    t0 = np.linalg.norm(start.x, axis=1)
+    return np.isfinite(start.value) & (t0 > 0.0)
+
+
+class _Unpack:
+    """Map the variables ``z = (v, t[, psi])`` of each start to ``(psi, y)``: ``u = v / |v|``
+    (the start's direction where ``v`` is zero or overflows), ``t`` clipped to its bounds."""
+
+    def __init__(self, u0: np.ndarray, t0: np.ndarray, psi0: np.ndarray, free_psi: bool):
+        self.u0, self.t0, self.psi0, self.free_psi = u0, t0, psi0, free_psi
+        self.n = u0.shape[1]
+
+    def __call__(self, Z: np.ndarray, rows: np.ndarray):
+        """``Z`` of shape ``(k, d)``; ``rows`` the start of each row."""
+        n = self.n
+        v = Z[:, :n]
+        nv = np.linalg.norm(v, axis=1, keepdims=True)
+        ok = np.isfinite(nv) & (nv > 0)
+        u = np.where(ok, v / np.where(ok, nv, 1.0), self.u0[rows])
+        t = np.clip(np.where(np.isnan(Z[:, n]), self.t0[rows], Z[:, n]), T_MIN, 1.0)
+        if self.free_psi:
+            p = np.where(np.isnan(Z[:, n + 1]), self.psi0[rows], Z[:, n + 1])
+        else:
+            p = self.psi0[rows]
+        return p, u * t[:, None]
+
+
+def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_psi: bool,
+           maxiter: int = 100) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Local maximisation of ``fun(psi, y)`` from every start of ``start`` at once.
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(psi, y)`` with ``psi`` of shape ``(k,)`` and ``y`` of shape ``(k, n)``, returning
+        shape ``(k,)``; ``y = t u`` with ``|u| = 1`` and ``t`` in ``[T_MIN, 1]``.
+    start : rotorlyap.methods.sampling.Extremum
+        The starts: ``value`` (their values of ``fun``), ``psi`` and ``x`` (their ``y``).
+    free_psi : bool
+        Let the azimuth move too.
+    maxiter : int
+        Largest number of iterations of each start.
+
+    Returns
+    -------
+    values, psi, y : numpy.ndarray
+        For each start, the best point found (the start itself where nothing better was).
+    """
+    values, psis, ys = (np.array(a, dtype=float, copy=True) for a in (start.value, start.psi, start.x))
+    valid = np.flatnonzero(_valid_starts(start))
+    if valid.size == 0:
+        return values, psis, ys
+    n = ys.shape[1]
+    t0 = np.linalg.norm(ys[valid], axis=1)
+    u0 = ys[valid] / t0[:, None]
+    unpack = _Unpack(u0, t0, psis[valid], free_psi)
+    d = n + 1 + int(free_psi)
+    m = valid.size
+    steps = np.eye(d) * _H
+    it = n  # index of t among the variables
+
+    def value_and_gradient(Z: np.ndarray, rows: np.ndarray):
+        """Minus ``fun`` and its central-difference gradient at the rows ``Z`` (k, d)."""
+        k = Z.shape[0]
+        Zall = np.concatenate([Z[None], Z[None] + steps[:, None], Z[None] - steps[:, None]]).reshape(-1, d)
+        p, y = unpack(Zall, np.tile(rows, 2 * d + 1))
+        v = -np.asarray(fun(p, y), dtype=float).reshape(2 * d + 1, k)
+        return v[0], ((v[1:d + 1] - v[d + 1:]) / (2 * _H)).T
+
+    def projected_gradient(z, g):
+        pg = g.copy()
+        t = z[:, it]
+        # minimising: a step -g leaves the bounds where t is at T_MIN with g > 0 or at 1 with g < 0
+        pg[:, it] = np.where(g[:, it] < 0, np.maximum(t - 1.0, g[:, it]), np.minimum(t - T_MIN, g[:, it]))
+        return pg
+
+    z = np.concatenate([u0, t0[:, None], psis[valid][:, None]] if free_psi else [u0, t0[:, None]], axis=1)
+    z[:, it] = np.clip(z[:, it], T_MIN, 1.0)
+    rows = np.arange(m)
+    F, G = value_and_gradient(z, rows)
+    Hinv = np.repeat(np.eye(d)[None], m, axis=0)
+    fresh = np.ones(m, dtype=bool)       # Hinv not yet updated: the first step is scaled
+    active = np.isfinite(F) & np.all(np.isfinite(G), axis=1)
+    active &= np.abs(projected_gradient(z, G)).max(axis=1) > _GTOL
+    iters = np.zeros(m, dtype=int)
+    for _ in range(maxiter):
+        idx = np.flatnonzero(active)
+        if idx.size == 0:
+            break
+        zi, Fi, Gi, Hi = z[idx], F[idx], G[idx], Hinv[idx]
+        t = zi[:, it]
+        # the bound of t active where the gradient pushes t out of [T_MIN, 1]
+        at_bound = ((t <= T_MIN) & (Gi[:, it] > 0)) | ((t >= 1.0) & (Gi[:, it] < 0))
+        free_mask = np.ones((idx.size, d))
+        free_mask[:, it] = np.where(at_bound, 0.0, 1.0)
+        Gf = Gi * free_mask
+        p = -np.einsum("kij,kj->ki", Hi * free_mask[:, :, None] * free_mask[:, None, :], Gf)
+        slope = np.einsum("ki,ki->k", Gf, p)
+        bad = ~(slope < 0) | ~np.all(np.isfinite(p), axis=1)   # not a descent direction: steepest
+        p = np.where(bad[:, None], -Gf, p)
+        first = fresh[idx] | bad
+        # the first step (no curvature known) at most 0.1 in the variables, as L-BFGS-B's 1/|g| caps it
+        pnorm = np.linalg.norm(p, axis=1)
+        scale = np.where(first, np.minimum(1.0, 0.1 / np.maximum(pnorm, 1e-300)), 1.0)
+        p = p * scale[:, None]
+        s_len = np.ones(idx.size)
+        pending = np.ones(idx.size, dtype=bool)
+        z_new, F_new, G_new = zi.copy(), Fi.copy(), Gi.copy()
+        for _ in range(_MAX_HALVINGS):
+            j = np.flatnonzero(pending)
+            if j.size == 0:
+                break
+            trial = zi[j] + s_len[j, None] * p[j]
+            trial[:, it] = np.clip(trial[:, it], T_MIN, 1.0)
+            Ft, Gt = value_and_gradient(trial, rows[idx[j]])
+            dec = np.einsum("ki,ki->k", Gi[j], trial - zi[j])
+            ok = np.isfinite(Ft) & np.all(np.isfinite(Gt), axis=1) & (Ft <= Fi[j] + _ARMIJO * np.minimum(dec, 0.0))
+            acc = j[ok]
+            z_new[acc], F_new[acc], G_new[acc] = trial[ok], Ft[ok], Gt[ok]
+            pending[acc] = False
+            s_len[j[~ok]] *= 0.5
+        moved = ~pending
+        # BFGS update of the inverse Hessian where the curvature condition holds
+        s = z_new - zi
+        yv = G_new - Gi
+        sy = np.einsum("ki,ki->k", s, yv)
+        upd = moved & (sy > 1e-10 * np.linalg.norm(s, axis=1) * np.linalg.norm(yv, axis=1)) & (sy > 0)
+        if upd.any():
+            u_ = np.flatnonzero(upd)
+            H = Hi[u_]
+            fr = first[u_]
+            if fr.any():  # Shanno-Phua scaling of the first inverse Hessian
+                yy = np.einsum("ki,ki->k", yv[u_], yv[u_])
+                H[fr] = np.eye(d)[None] * (sy[u_][fr] / yy[fr])[:, None, None]
+            rho = 1.0 / sy[u_]
+            I = np.eye(d)[None]
+            V = I - rho[:, None, None] * np.einsum("ki,kj->kij", s[u_], yv[u_])
+            H = np.einsum("kij,kjl,kml->kim", V, H, V) + rho[:, None, None] * np.einsum("ki,kj->kij", s[u_], s[u_])
+            Hi[u_] = H
+            fresh[idx[u_]] = False
+        reset = moved & ~upd   # no usable curvature: start again from the steepest direction
+        Hi[reset] = np.eye(d)
+        fresh[idx[reset]] = True
+        Hinv[idx] = Hi
+        change = Fi - F_new
+        z[idx], F[idx], G[idx] = z_new, F_new, G_new
+        iters[idx] += 1
+        done = pending.copy()                                       # no step increased the value
+        done |= change <= _FTOL * np.maximum.reduce([np.abs(Fi), np.abs(F_new), np.ones_like(Fi)])
+        done |= np.abs(projected_gradient(z_new, G_new)).max(axis=1) <= _GTOL
+        active[idx[done]] = False
+    p_best, y_best = unpack(z, rows)
+    better = np.isfinite(F) & (-F > values[valid])
+    sel = valid[better]
+    values[sel], psis[sel], ys[sel] = -F[better], p_best[better], y_best[better]
+    return values, psis, ys
+
+
+def polish_scipy(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_psi: bool,
+                 maxiter: int = 100) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`polish` by scipy's L-BFGS-B, one start at a time (the reference it is measured and
+    tested against): the same variables, bounds and central-difference gradients, one small call
+    of ``fun`` per iterate."""
+    from scipy.optimize import minimize
+
+    values, psis, ys = (np.array(a, dtype=float, copy=True) for a in (start.value, start.psi, start.x))
+    n = ys.shape[1]
+    for i in np.flatnonzero(_valid_starts(start)):
+        t0 = float(np.linalg.norm(ys[i]))
+        unpack = _Unpack(ys[i:i + 1] / t0, np.array([t0]), psis[i:i + 1], free_psi)
+        z0 = np.concatenate([ys[i] / t0, [t0], [psis[i]] if free_psi else []])
+        d = z0.size
+        steps = np.eye(d) * _H
+        rows = np.zeros(2 * d + 1, dtype=int)
+
+        def fg(z):
+            v = np.asarray(fun(*unpack(np.vstack([z, z + steps, z - steps]), rows)), dtype=float)
+            return -v[0], -(v[1:d + 1] - v[d + 1:]) / (2 * _H)
+
+        bounds = [(None, None)] * n + [(T_MIN, 1.0)] + ([(None, None)] if free_psi else [])
+        res = minimize(fg, z0, jac=True, method="L-BFGS-B", bounds=bounds, options={"maxiter": maxiter})
+        if np.isfinite(res.fun) and -res.fun > values[i]:
+            p, y = unpack(res.x[None, :], np.zeros(1, dtype=int))
+            values[i], psis[i], ys[i] = -res.fun, p[0], y[0]
+    return values, psis, ys
