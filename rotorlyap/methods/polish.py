@@ -34,10 +34,11 @@ T_MIN = 1e-9
 would lose the direction ``u``)."""
 
 _H = 1e-6          # central-difference step of every variable
-_FTOL = 2.220446049250313e-09  # L-BFGS-B's default factr * eps: relative change of the value
-_GTOL = 1e-5       # L-BFGS-B's default pgtol: largest projected gradient component
+_FTOL = 1e-12      # relative change of the value (L-BFGS-B: 2.2e-9)
+_GTOL = 1e-8       # largest projected gradient component (L-BFGS-B: 1e-5)
 _ARMIJO = 1e-4     # sufficient increase of the line search
-_MAX_HALVINGS = 30
+_MAX_HALVINGS = 30   # rounds of the line search (halvings and extrapolations)
+_WOLFE = 0.9       # curvature condition: the slope along the step reduced to 0.9 of the start's
 
 
 def _valid_starts(start) -> np.ndarray:
@@ -146,22 +147,36 @@ def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_p
         pnorm = np.linalg.norm(p, axis=1)
         scale = np.where(first, np.minimum(1.0, 0.1 / np.maximum(pnorm, 1e-300)), 1.0)
         p = p * scale[:, None]
+        # line search, every start at once: backtrack (halve) until the Armijo condition holds;
+        # where the first accepted step still descends steeply (the curvature condition of
+        # Wolfe fails), extrapolate (x4) while the value keeps decreasing
         s_len = np.ones(idx.size)
-        pending = np.ones(idx.size, dtype=bool)
+        pending = np.ones(idx.size, dtype=bool)     # no step accepted yet
+        searching = np.ones(idx.size, dtype=bool)
+        expanding = np.zeros(idx.size, dtype=bool)
         z_new, F_new, G_new = zi.copy(), Fi.copy(), Gi.copy()
+        g_p = np.einsum("ki,ki->k", Gf, p)  # < 0: the slope along p at the start
         for _ in range(_MAX_HALVINGS):
-            j = np.flatnonzero(pending)
+            j = np.flatnonzero(searching)
             if j.size == 0:
                 break
             trial = zi[j] + s_len[j, None] * p[j]
+            clipped = (trial[:, it] < T_MIN) | (trial[:, it] > 1.0)
             trial[:, it] = np.clip(trial[:, it], T_MIN, 1.0)
             Ft, Gt = value_and_gradient(trial, rows[idx[j]])
             dec = np.einsum("ki,ki->k", Gi[j], trial - zi[j])
             ok = np.isfinite(Ft) & np.all(np.isfinite(Gt), axis=1) & (Ft <= Fi[j] + _ARMIJO * np.minimum(dec, 0.0))
+            ok &= ~expanding[j] | (Ft < F_new[j])   # an extrapolated step must improve on the accepted one
             acc = j[ok]
             z_new[acc], F_new[acc], G_new[acc] = trial[ok], Ft[ok], Gt[ok]
             pending[acc] = False
-            s_len[j[~ok]] *= 0.5
+            steep = np.einsum("ki,ki->k", Gt * free_mask[j], p[j]) < _WOLFE * g_p[j]
+            grow = ok & steep & ~clipped
+            searching[j[ok & ~grow]] = False
+            searching[j[~ok & expanding[j]]] = False       # the extrapolation went too far: keep the last
+            expanding[j[grow]] = True
+            s_len[j[grow]] *= 4.0
+            s_len[j[~ok & ~expanding[j]]] *= 0.5
         moved = ~pending
         # BFGS update of the inverse Hessian where the curvature condition holds
         s = z_new - zi
