@@ -12,12 +12,19 @@ Prints, in one run:
    separately), and the fraction of one core's peak that the compiled path reaches;
 3. the wall time of the command line's strict analyses (hover; mu = 0.15 about the periodic
    motion with the quadratic function), each in a fresh interpreter;
-4. the execution time of every chapter from a fresh kernel (nbclient, one at a time), and
+4. the searches' polish (:mod:`rotorlyap.methods.polish`): the same 64 starts on a blade's
+   band polished one at a time by scipy's L-BFGS-B (the path before issue 27) and all together
+   by the batched quasi-Newton ascent: time, calls of ``W'``, states evaluated, best value;
+5. ``certify(..., verify=True)`` from a warm interpreter: the three Table I hover cases and the
+   trimmed helicopter at mu = 0.1 (forward C.G.), beside the issue's targets and the times
+   measured when it was filed (2026-12-03);
+6. the execution time of every chapter from a fresh kernel (nbclient, one at a time), and
    their sum.
 
 Single-threaded numerics (OMP/OPENBLAS/MKL threads = 1, set before numpy is imported). The
 issue-12 targets are printed beside each figure; they are targets of this benchmark, not of
-the tests. ``--quick`` skips the 1e6 batch and takes fewer repeats.
+the tests. ``--quick`` skips the 1e6 batch and takes fewer repeats; ``--no-flight`` skips the
+forward-flight proof of part 5.
 """
 
 from __future__ import annotations
@@ -194,6 +201,67 @@ def analyses() -> dict[str, float]:
     return out
 
 
+#: ``certify(..., verify=True)`` from a warm interpreter when issue 27 was filed (2026-12-03, s)
+#: and its targets (s).
+CERTIFY_BEFORE = {"hover, forward C.G.": 5.5, "flight, mu = 0.1, forward C.G.": 269.0}
+CERTIFY_TARGET = {"hover": 2.0, "flight": 20.0}
+
+
+def polish_comparison(n_starts: int = 64) -> dict:
+    """The same ``n_starts`` starts on the band of the forward C.G.'s quadratic function about its
+    periodic motion at mu = 0.15 polished by both methods: time (s), calls, states, best value."""
+    from rotorlyap.analysis.functions import quadratic_function
+    from rotorlyap.methods.polish import polish, polish_scipy
+    from rotorlyap.methods.sampling import Extremum
+    from rotorlyap.model.blade import Blade
+    from rotorlyap.model.parameters import BladeParameters
+    from rotorlyap.model.steady import periodic_motion, tabulate_motion
+
+    params = BladeParameters.table_i("forward")
+    q = quadratic_function(Blade(params, 0.15), tabulate_motion(periodic_motion(params, 0.15, n_points=128)))
+    A = 0.4
+    calls = {"n": 0, "states": 0}
+
+    def fun(psi, y):  # W' on the shell 0.2 A <= |x| <= A (scaled coordinates), y = t u
+        calls["n"] += 1
+        calls["states"] += psi.size
+        t = np.linalg.norm(y, axis=1)
+        r = A * (0.2 + 0.8 * np.clip(t, 0.0, 1.0))
+        return q.dW(psi, (y / np.maximum(t, 1e-300)[:, None]) * r[:, None] * q.scales)
+
+    rng = np.random.default_rng(0)
+    u = rng.normal(size=(n_starts, 6))
+    y = u / np.linalg.norm(u, axis=1)[:, None] * rng.uniform(0.1, 1.0, n_starts)[:, None]
+    psi = rng.uniform(0.0, 2.0 * np.pi, n_starts)
+    start = Extremum(fun(psi, y), psi, y)
+    out = {}
+    for name, method in (("scipy L-BFGS-B, one start at a time", polish_scipy), ("batched", polish)):
+        method(fun, start, free_psi=True)  # warm
+        calls.update(n=0, states=0)
+        t0 = time.perf_counter()
+        value, _, _ = method(fun, start, free_psi=True)
+        out[name] = (time.perf_counter() - t0, calls["n"], calls["states"], float(value.max()))
+    return out
+
+
+def certify_times(flight: bool = True) -> dict[str, tuple[float, str]]:
+    """``certify(..., verify=True)`` from a warm interpreter: (s, the proof's summary)."""
+    from rotorlyap.analysis.certify import certify
+    from rotorlyap.model.parameters import BladeParameters
+
+    cases = {f"hover, {cg} C.G.": (BladeParameters.table_i(cg), 0.0) for cg in ("forward", "neutral", "backward")}
+    if flight:
+        cases["flight, mu = 0.1, forward C.G."] = (BladeParameters.flight_case("forward"), 0.1)
+    certify(BladeParameters.table_i("forward"), 0.0, verify=True)  # warm: compile, caches
+    out = {}
+    for name, (params, mu) in cases.items():
+        t0 = time.perf_counter()
+        cert = certify(params, mu, verify=True)
+        out[name] = (time.perf_counter() - t0, f"proved A = {cert.proof.A:.4g}, min lambda0 = "
+                     f"{cert.proof.min_lambda0:.4g}" if cert.proof.proved else "not proved")
+    return out
+
+
 def chapters() -> dict[str, float]:
     """Execution time of every chapter from a fresh kernel, one at a time, s."""
     import nbformat
@@ -218,6 +286,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="no 1e6 batch, fewer repeats")
     parser.add_argument("--no-chapters", action="store_true", help="skip the chapter times")
+    parser.add_argument("--no-flight", action="store_true", help="skip the forward-flight proof")
     args = parser.parse_args(argv)
     batches = BATCHES[:-1] if args.quick else BATCHES
 
@@ -263,8 +332,21 @@ def main(argv=None) -> int:
     for name, t in analyses().items():
         print(f"  python -m rotorlyap {name:70s} {t:6.1f} s")
 
+    print("\n4. the searches' polish: 64 starts on a band of the forward C.G. at mu = 0.15, azimuth free")
+    best_w = "best W'"
+    print(f"  {'method':38s} {'time':>8s} {'calls':>7s} {'states':>9s} {best_w:>14s}")
+    for name, (t, n_calls, n_states, best) in polish_comparison().items():
+        print(f"  {name:38s} {t:7.3f}s {n_calls:7d} {n_states:9d} {best:14.8g}")
+
+    print("\n5. certify(..., verify=True) from a warm interpreter (all cores); targets: hover <= "
+          f"{CERTIFY_TARGET['hover']:g} s, flight <= {CERTIFY_TARGET['flight']:g} s")
+    for name, (t, proof) in certify_times(not args.no_flight).items():
+        before = CERTIFY_BEFORE.get(name)
+        then = f"(2026-12-03: {before:g} s)" if before else ""
+        print(f"  {name:34s} {t:7.1f} s {then:20s} {proof}")
+
     if not args.no_chapters:
-        print("\n4. chapters executed from a fresh kernel, one at a time; target <= 60 s each, <= 180 s in all")
+        print("\n6. chapters executed from a fresh kernel, one at a time; target <= 180 s each")
         times = chapters()
         print(f"  {'all chapters':32s} {sum(times.values()):6.1f} s")
     return 0

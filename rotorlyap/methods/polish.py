@@ -27,7 +27,7 @@ from typing import Callable
 
 import numpy as np
 
-__all__ = ["T_MIN", "polish", "polish_scipy"]
+__all__ = ["T_MIN", "ascend", "polish", "polish_scipy"]
 
 T_MIN = 1e-9
 """Smallest ``t`` of the band's parametrisation ``y = t u`` (``t = 0``, the level set itself,
@@ -69,9 +69,143 @@ class _Unpack:
         return p, u * t[:, None]
 
 
+def ascend(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], z0: np.ndarray, lower: np.ndarray,
+           upper: np.ndarray, *, maxiter: int = 100, ftol: float = _FTOL, gtol: float = _GTOL,
+           ) -> tuple[np.ndarray, np.ndarray]:
+    """Local maxima of ``fun(Z, rows)`` from every row of ``z0`` at once, within the bounds.
+
+    The core of :func:`polish`: a projected quasi-Newton ascent of each start (its own BFGS
+    inverse Hessian; variables at a bound where the gradient pushes them out held fixed, as
+    L-BFGS-B does; a line search that backtracks to the Armijo condition and extrapolates while
+    the slope stays steep), the value and central-difference gradient of every moving start in
+    one call of ``fun`` per round.
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(Z, rows)``: the values at the points ``Z`` (k, d), row ``j`` a point of the start
+        ``rows[j]``; shape ``(k,)``.
+    z0 : numpy.ndarray
+        Starts, shape ``(m, d)``, within the bounds.
+    lower, upper : numpy.ndarray
+        Bounds, shape ``(m, d)`` (``-inf``/``inf`` where free).
+    maxiter : int
+        Largest number of iterations of each start.
+    ftol, gtol : float
+        A start stops when an iteration changes its value by at most ``ftol`` relative (to
+        ``max(|f|, 1)``), when its largest projected gradient component is at most ``gtol``, or
+        when no step along its direction increases the value.
+
+    Returns
+    -------
+    value, z : numpy.ndarray
+        The values (``nan`` where a start's own value is not finite) and points reached.
+    """
+    z = np.clip(np.array(z0, dtype=float, copy=True), lower, upper)
+    m, d = z.shape
+    steps = np.eye(d) * _H
+
+    def value_and_gradient(Z: np.ndarray, rows: np.ndarray):
+        """Minus ``fun`` and its central-difference gradient at the rows ``Z`` (k, d)."""
+        k = Z.shape[0]
+        Zall = np.concatenate([Z[None], Z[None] + steps[:, None], Z[None] - steps[:, None]]).reshape(-1, d)
+        v = -np.asarray(fun(Zall, np.tile(rows, 2 * d + 1)), dtype=float).reshape(2 * d + 1, k)
+        return v[0], ((v[1:d + 1] - v[d + 1:]) / (2 * _H)).T
+
+    def projected_gradient(zz, g, lo, hi):  # L-BFGS-B's: the step -g projected on the box
+        return zz - np.clip(zz - g, lo, hi)
+
+    rows = np.arange(m)
+    F, G = value_and_gradient(z, rows)
+    Hinv = np.repeat(np.eye(d)[None], m, axis=0)
+    fresh = np.ones(m, dtype=bool)       # Hinv not yet updated: the first step is scaled
+    active = np.isfinite(F) & np.all(np.isfinite(G), axis=1)
+    active &= np.abs(projected_gradient(z, G, lower, upper)).max(axis=1) > gtol
+    eye = np.eye(d)[None]
+    for _ in range(maxiter):
+        idx = np.flatnonzero(active)
+        if idx.size == 0:
+            break
+        zi, Fi, Gi, Hi = z[idx], F[idx], G[idx], Hinv[idx]
+        lo, hi = lower[idx], upper[idx]
+        # minimising F = -fun: a variable at a bound where the step -G leaves the box stays put
+        held = ((zi <= lo) & (Gi > 0)) | ((zi >= hi) & (Gi < 0))
+        free_mask = np.where(held, 0.0, 1.0)
+        Gf = Gi * free_mask
+        p = -np.einsum("kij,kj->ki", Hi * free_mask[:, :, None] * free_mask[:, None, :], Gf)
+        bad = ~(np.einsum("ki,ki->k", Gf, p) < 0) | ~np.all(np.isfinite(p), axis=1)
+        p = np.where(bad[:, None], -Gf, p)                       # not a descent direction: steepest
+        first = fresh[idx] | bad
+        # no curvature known yet: the first step at most 0.1 in the variables
+        pnorm = np.linalg.norm(p, axis=1)
+        p = p * np.where(first, np.minimum(1.0, 0.1 / np.maximum(pnorm, 1e-300)), 1.0)[:, None]
+        # line search, every start at once: backtrack (halve) until the Armijo condition holds;
+        # where the first accepted step still descends steeply (the curvature condition of
+        # Wolfe fails), extrapolate (x4) while the value keeps decreasing
+        s_len = np.ones(idx.size)
+        pending = np.ones(idx.size, dtype=bool)     # no step accepted yet
+        searching = np.ones(idx.size, dtype=bool)
+        expanding = np.zeros(idx.size, dtype=bool)
+        z_new, F_new, G_new = zi.copy(), Fi.copy(), Gi.copy()
+        g_p = np.einsum("ki,ki->k", Gf, p)  # < 0: the slope along p at the start
+        for _ in range(_MAX_HALVINGS):
+            j = np.flatnonzero(searching)
+            if j.size == 0:
+                break
+            raw = zi[j] + s_len[j, None] * p[j]
+            trial = np.clip(raw, lo[j], hi[j])
+            clipped = np.any(trial != raw, axis=1)
+            Ft, Gt = value_and_gradient(trial, idx[j])
+            dec = np.einsum("ki,ki->k", Gi[j], trial - zi[j])
+            ok = np.isfinite(Ft) & np.all(np.isfinite(Gt), axis=1) & (Ft <= Fi[j] + _ARMIJO * np.minimum(dec, 0.0))
+            ok &= ~expanding[j] | (Ft < F_new[j])   # an extrapolated step must improve on the accepted one
+            acc = j[ok]
+            z_new[acc], F_new[acc], G_new[acc] = trial[ok], Ft[ok], Gt[ok]
+            pending[acc] = False
+            steep = np.einsum("ki,ki->k", Gt * free_mask[j], p[j]) < _WOLFE * g_p[j]
+            grow = ok & steep & ~clipped
+            searching[j[ok & ~grow]] = False
+            searching[j[~ok & expanding[j]]] = False       # the extrapolation went too far: keep the last
+            expanding[j[grow]] = True
+            s_len[j[grow]] *= 4.0
+            s_len[j[~ok & ~expanding[j]]] *= 0.5
+        moved = ~pending
+        # BFGS update of the inverse Hessian where the curvature condition holds
+        s = z_new - zi
+        yv = G_new - Gi
+        sy = np.einsum("ki,ki->k", s, yv)
+        upd = moved & (sy > 1e-10 * np.linalg.norm(s, axis=1) * np.linalg.norm(yv, axis=1)) & (sy > 0)
+        if upd.any():
+            u_ = np.flatnonzero(upd)
+            H = Hi[u_]
+            fr = first[u_]
+            if fr.any():  # Shanno-Phua scaling of the first inverse Hessian
+                yy = np.einsum("ki,ki->k", yv[u_], yv[u_])
+                H[fr] = eye * (sy[u_][fr] / yy[fr])[:, None, None]
+            rho = 1.0 / sy[u_]
+            V = eye - rho[:, None, None] * np.einsum("ki,kj->kij", s[u_], yv[u_])
+            H = np.einsum("kij,kjl,kml->kim", V, H, V) + rho[:, None, None] * np.einsum("ki,kj->kij", s[u_], s[u_])
+            Hi[u_] = H
+            fresh[idx[u_]] = False
+        reset = moved & ~upd   # no usable curvature: start again from the steepest direction
+        Hi[reset] = np.eye(d)
+        fresh[idx[reset]] = True
+        Hinv[idx] = Hi
+        change = Fi - F_new
+        z[idx], F[idx], G[idx] = z_new, F_new, G_new
+        done = pending.copy()                                       # no step increased the value
+        done |= change <= ftol * np.maximum(np.maximum(np.abs(Fi), np.abs(F_new)), 1.0)
+        done |= np.abs(projected_gradient(z_new, G_new, lo, hi)).max(axis=1) <= gtol
+        active[idx[done]] = False
+    return -F, z
+
+
 def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_psi: bool,
            maxiter: int = 100) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Local maximisation of ``fun(psi, y)`` from every start of ``start`` at once.
+
+    The variables of each start: ``v`` (the direction ``v / |v|``, free in ``R^n``), ``t`` in
+    ``[T_MIN, 1]`` and, if ``free_psi``, ``psi``; maximised by :func:`ascend`.
 
     Parameters
     ----------
@@ -98,119 +232,15 @@ def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_p
     t0 = np.linalg.norm(ys[valid], axis=1)
     u0 = ys[valid] / t0[:, None]
     unpack = _Unpack(u0, t0, psis[valid], free_psi)
-    d = n + 1 + int(free_psi)
-    m = valid.size
-    steps = np.eye(d) * _H
-    it = n  # index of t among the variables
-
-    def value_and_gradient(Z: np.ndarray, rows: np.ndarray):
-        """Minus ``fun`` and its central-difference gradient at the rows ``Z`` (k, d)."""
-        k = Z.shape[0]
-        Zall = np.concatenate([Z[None], Z[None] + steps[:, None], Z[None] - steps[:, None]]).reshape(-1, d)
-        p, y = unpack(Zall, np.tile(rows, 2 * d + 1))
-        v = -np.asarray(fun(p, y), dtype=float).reshape(2 * d + 1, k)
-        return v[0], ((v[1:d + 1] - v[d + 1:]) / (2 * _H)).T
-
-    def projected_gradient(z, g):
-        pg = g.copy()
-        t = z[:, it]
-        # minimising: a step -g leaves the bounds where t is at T_MIN with g > 0 or at 1 with g < 0
-        pg[:, it] = np.where(g[:, it] < 0, np.maximum(t - 1.0, g[:, it]), np.minimum(t - T_MIN, g[:, it]))
-        return pg
-
-    z = np.concatenate([u0, t0[:, None], psis[valid][:, None]] if free_psi else [u0, t0[:, None]], axis=1)
-    z[:, it] = np.clip(z[:, it], T_MIN, 1.0)
-    rows = np.arange(m)
-    F, G = value_and_gradient(z, rows)
-    Hinv = np.repeat(np.eye(d)[None], m, axis=0)
-    fresh = np.ones(m, dtype=bool)       # Hinv not yet updated: the first step is scaled
-    active = np.isfinite(F) & np.all(np.isfinite(G), axis=1)
-    active &= np.abs(projected_gradient(z, G)).max(axis=1) > _GTOL
-    iters = np.zeros(m, dtype=int)
-    for _ in range(maxiter):
-        idx = np.flatnonzero(active)
-        if idx.size == 0:
-            break
-        zi, Fi, Gi, Hi = z[idx], F[idx], G[idx], Hinv[idx]
-        t = zi[:, it]
-        # the bound of t active where the gradient pushes t out of [T_MIN, 1]
-        at_bound = ((t <= T_MIN) & (Gi[:, it] > 0)) | ((t >= 1.0) & (Gi[:, it] < 0))
-        free_mask = np.ones((idx.size, d))
-        free_mask[:, it] = np.where(at_bound, 0.0, 1.0)
-        Gf = Gi * free_mask
-        p = -np.einsum("kij,kj->ki", Hi * free_mask[:, :, None] * free_mask[:, None, :], Gf)
-        slope = np.einsum("ki,ki->k", Gf, p)
-        bad = ~(slope < 0) | ~np.all(np.isfinite(p), axis=1)   # not a descent direction: steepest
-        p = np.where(bad[:, None], -Gf, p)
-        first = fresh[idx] | bad
-        # the first step (no curvature known) at most 0.1 in the variables, as L-BFGS-B's 1/|g| caps it
-        pnorm = np.linalg.norm(p, axis=1)
-        scale = np.where(first, np.minimum(1.0, 0.1 / np.maximum(pnorm, 1e-300)), 1.0)
-        p = p * scale[:, None]
-        # line search, every start at once: backtrack (halve) until the Armijo condition holds;
-        # where the first accepted step still descends steeply (the curvature condition of
-        # Wolfe fails), extrapolate (x4) while the value keeps decreasing
-        s_len = np.ones(idx.size)
-        pending = np.ones(idx.size, dtype=bool)     # no step accepted yet
-        searching = np.ones(idx.size, dtype=bool)
-        expanding = np.zeros(idx.size, dtype=bool)
-        z_new, F_new, G_new = zi.copy(), Fi.copy(), Gi.copy()
-        g_p = np.einsum("ki,ki->k", Gf, p)  # < 0: the slope along p at the start
-        for _ in range(_MAX_HALVINGS):
-            j = np.flatnonzero(searching)
-            if j.size == 0:
-                break
-            trial = zi[j] + s_len[j, None] * p[j]
-            clipped = (trial[:, it] < T_MIN) | (trial[:, it] > 1.0)
-            trial[:, it] = np.clip(trial[:, it], T_MIN, 1.0)
-            Ft, Gt = value_and_gradient(trial, rows[idx[j]])
-            dec = np.einsum("ki,ki->k", Gi[j], trial - zi[j])
-            ok = np.isfinite(Ft) & np.all(np.isfinite(Gt), axis=1) & (Ft <= Fi[j] + _ARMIJO * np.minimum(dec, 0.0))
-            ok &= ~expanding[j] | (Ft < F_new[j])   # an extrapolated step must improve on the accepted one
-            acc = j[ok]
-            z_new[acc], F_new[acc], G_new[acc] = trial[ok], Ft[ok], Gt[ok]
-            pending[acc] = False
-            steep = np.einsum("ki,ki->k", Gt * free_mask[j], p[j]) < _WOLFE * g_p[j]
-            grow = ok & steep & ~clipped
-            searching[j[ok & ~grow]] = False
-            searching[j[~ok & expanding[j]]] = False       # the extrapolation went too far: keep the last
-            expanding[j[grow]] = True
-            s_len[j[grow]] *= 4.0
-            s_len[j[~ok & ~expanding[j]]] *= 0.5
-        moved = ~pending
-        # BFGS update of the inverse Hessian where the curvature condition holds
-        s = z_new - zi
-        yv = G_new - Gi
-        sy = np.einsum("ki,ki->k", s, yv)
-        upd = moved & (sy > 1e-10 * np.linalg.norm(s, axis=1) * np.linalg.norm(yv, axis=1)) & (sy > 0)
-        if upd.any():
-            u_ = np.flatnonzero(upd)
-            H = Hi[u_]
-            fr = first[u_]
-            if fr.any():  # Shanno-Phua scaling of the first inverse Hessian
-                yy = np.einsum("ki,ki->k", yv[u_], yv[u_])
-                H[fr] = np.eye(d)[None] * (sy[u_][fr] / yy[fr])[:, None, None]
-            rho = 1.0 / sy[u_]
-            I = np.eye(d)[None]
-            V = I - rho[:, None, None] * np.einsum("ki,kj->kij", s[u_], yv[u_])
-            H = np.einsum("kij,kjl,kml->kim", V, H, V) + rho[:, None, None] * np.einsum("ki,kj->kij", s[u_], s[u_])
-            Hi[u_] = H
-            fresh[idx[u_]] = False
-        reset = moved & ~upd   # no usable curvature: start again from the steepest direction
-        Hi[reset] = np.eye(d)
-        fresh[idx[reset]] = True
-        Hinv[idx] = Hi
-        change = Fi - F_new
-        z[idx], F[idx], G[idx] = z_new, F_new, G_new
-        iters[idx] += 1
-        done = pending.copy()                                       # no step increased the value
-        done |= change <= _FTOL * np.maximum.reduce([np.abs(Fi), np.abs(F_new), np.ones_like(Fi)])
-        done |= np.abs(projected_gradient(z_new, G_new)).max(axis=1) <= _GTOL
-        active[idx[done]] = False
-    p_best, y_best = unpack(z, rows)
-    better = np.isfinite(F) & (-F > values[valid])
+    z0 = np.concatenate([u0, t0[:, None], psis[valid][:, None]] if free_psi else [u0, t0[:, None]], axis=1)
+    lower = np.full(z0.shape, -np.inf)
+    upper = np.full(z0.shape, np.inf)
+    lower[:, n], upper[:, n] = T_MIN, 1.0
+    F, z = ascend(lambda Z, rows: fun(*unpack(Z, rows)), z0, lower, upper, maxiter=maxiter)
+    p_best, y_best = unpack(z, np.arange(valid.size))
+    better = np.isfinite(F) & (F > values[valid])
     sel = valid[better]
-    values[sel], psis[sel], ys[sel] = -F[better], p_best[better], y_best[better]
+    values[sel], psis[sel], ys[sel] = F[better], p_best[better], y_best[better]
     return values, psis, ys
 
 
