@@ -225,14 +225,16 @@ class Balls:
         float denominator ``d = fl(m fl(m - r))`` is at most the exact one times ``(1 + u)**2``
         (plus ``eta``, negligible as ``d >= 2**-1000`` is required), so
         ``r / (m (m - r)) <= fl(r / d) (1 + u)**4 + eta``; with ``u |c| + eta`` for the midpoint
-        and one more sum: ``<= s (1 + u)**5 + 3 eta``.
+        and one more sum: ``<= s (1 + u)**5 + 3 eta``. Where ``d`` overflows (then
+        ``m - r >= 1``), ``fl(fl(r / m) / gap)`` instead: ``<= (1 + u)**3`` times it ``+ 4 eta``.
         """
         m = np.abs(self.mid)
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore", under="ignore"):
             gap = m - self.rad          # fl is monotone: gap > 0 implies m > r exactly
             d = m * gap
             c = 1.0 / self.mid
-            s = self.rad / d + U * np.abs(c)
+            spread = np.where(np.isfinite(d), self.rad / d, (self.rad / m) / gap)
+            s = spread + U * np.abs(c)
             ok = (gap > 0) & (d >= 2.0 ** -1000) & np.isfinite(s) & np.isfinite(c)
             return Balls._new(np.where(ok, c, np.nan), np.where(ok, _up(s), np.nan))
 
@@ -279,20 +281,16 @@ class Balls:
         return Balls._new(np.where(bad, np.nan, out.mid), np.where(bad, np.nan, out.rad))
 
     def sin(self) -> "Balls":
-        """``sin``: Taylor polynomial at the midpoint (:func:`_sin_cos_point`) and
-        ``|sin(m + d) - sin(m)| <= min(r |cos m| + r^2 / 2, r)`` over the ball."""
-        s, c = _sin_cos_point(self.mid)
-        return _widen_trig(s, c, self.rad)
+        """``sin`` over the ball (:func:`_sin_cos_range`)."""
+        return _sin_cos_range(self)[0]
 
     def cos(self) -> "Balls":
-        """``cos``: as :meth:`sin`, ``|cos(m + d) - cos(m)| <= min(r |sin m| + r^2 / 2, r)``."""
-        s, c = _sin_cos_point(self.mid)
-        return _widen_trig(c, s, self.rad)
+        """``cos`` over the ball (:func:`_sin_cos_range`)."""
+        return _sin_cos_range(self)[1]
 
     def sin_cos(self) -> tuple["Balls", "Balls"]:
-        """``(sin, cos)`` from one argument reduction."""
-        s, c = _sin_cos_point(self.mid)
-        return _widen_trig(s, c, self.rad), _widen_trig(c, s, self.rad)
+        """``(sin, cos)`` over the ball, from one evaluation at its ends."""
+        return _sin_cos_range(self)
 
     def atan(self) -> "Balls":
         """``atan`` (monotone): the hull of the point enclosures at the two ends
@@ -492,22 +490,33 @@ def _sin_cos_point(m: np.ndarray) -> tuple[Balls, Balls]:
     return s, c
 
 
-def _widen_trig(f: Balls, g: Balls, r: np.ndarray) -> Balls:
-    """``f`` (sin or cos at the midpoints) widened over the balls of radius ``r``: ``g`` the
-    other function at the midpoints (the derivative up to sign), ``|f''| <= 1``; clipped to
-    ``[-1, 1]``."""
+def _sin_cos_range(x: Balls) -> tuple[Balls, Balls]:
+    """Balls of ``sin`` and ``cos`` over the balls ``x``: their ranges over ``[lo, hi]``.
+
+    The point enclosures at the ends (:func:`_sin_cos_point`) bound the values there; on an
+    interval shorter than pi each function has at most one critical point inside, and one
+    exists only where its derivative may change sign between the ends: ``sin`` may reach its
+    maximum 1 unless ``cos(lo) < 0`` or ``cos(hi) > 0`` is certain, its minimum -1 unless
+    ``cos(lo) > 0`` or ``cos(hi) < 0`` is; ``cos`` likewise with ``-sin``. Intervals of length
+    3 or more get ``[-1, 1]``; non-finite balls ``nan``.
+    """
+    lo, hi = x.lower(), x.upper()
+    ok = np.isfinite(lo) & np.isfinite(hi)
     with np.errstate(invalid="ignore", over="ignore"):
-        # exact: min(r |g| + r^2 / 2, r) <= computed with 3 roundings (F2) + f.rad: 1 more
-        spread = np.minimum(r * g.magnitude() + 0.5 * (r * r), r)
-        rad = _up(f.rad + spread)
-        out = Balls._new(f.mid, rad)
-        clip = (f.mid + rad > 1.0) | (f.mid - rad < -1.0)
-        if np.any(clip):
-            lo = np.maximum(out.lower(), -1.0)
-            hi = np.minimum(out.upper(), 1.0)
-            out = where(clip, from_bounds(lo, hi), out)
-    bad = ~np.isfinite(r) | ~f.finite()
-    return Balls._new(np.where(bad, np.nan, out.mid), np.where(bad, np.nan, out.rad))
+        wide = ~(hi - lo < 3.0)   # fl(hi - lo) < 3 implies hi - lo < pi exactly
+    n = lo.size
+    s, c = _sin_cos_point(np.concatenate([np.where(ok, lo, 0.0).ravel(), np.where(ok, hi, 0.0).ravel()]))
+    s0, s1, c0, c1 = s[:n], s[n:], c[:n], c[n:]
+
+    def rng(f0: Balls, f1: Balls, max_possible: np.ndarray, min_possible: np.ndarray) -> Balls:
+        top = np.where(max_possible | wide, 1.0, np.minimum(np.maximum(f0.upper(), f1.upper()), 1.0))
+        bottom = np.where(min_possible | wide, -1.0, np.maximum(np.minimum(f0.lower(), f1.lower()), -1.0))
+        out = from_bounds(bottom.reshape(lo.shape), top.reshape(lo.shape))
+        return Balls._new(np.where(ok, out.mid, np.nan), np.where(ok, out.rad, np.nan))
+
+    sin = rng(s0, s1, ~(c0.negative() | c1.positive()), ~(c0.positive() | c1.negative()))
+    cos = rng(c0, c1, ~(s0.positive() | s1.negative()), ~(s0.negative() | s1.positive()))
+    return sin, cos
 
 
 def _atan_point(x: np.ndarray) -> Balls:
