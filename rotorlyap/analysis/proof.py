@@ -63,9 +63,9 @@ class BladeProofSystem:
     n_coarse : int, optional
         Azimuth intervals of the tube's enclosures (default: as many as asked); the fine
         intervals must be a multiple.
-    arithmetic : {"balls", "arb"}, optional
-        The ball arithmetic (:class:`~rotorlyap.analysis.enclosure.BladeEnclosure`; default float
-        balls).
+    arithmetic : {"auto", "balls", "arb"}, optional
+        The ball arithmetic (:class:`~rotorlyap.analysis.enclosure.BladeEnclosure`; default
+        ``"auto"``: Arb in hover, float balls in forward flight).
     """
 
     n = 6
@@ -120,7 +120,7 @@ def proof_problem(fun: QuadraticFunction, *, n_intervals: int | None = None, n_c
         The function (its blade, steady motion, scales and solution ``P``).
     n_intervals, n_coarse : int, optional
         As :func:`prove_blade`.
-    arithmetic : {"balls", "arb"}, optional
+    arithmetic : {"auto", "balls", "arb"}, optional
         As :func:`prove_blade`.
 
     Returns
@@ -171,10 +171,12 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
         Azimuth intervals of the Hessians over the tube (default ``n_intervals / 8``).
     n_bisect : int
         Bisection steps on the bound.
-    arithmetic : {"balls", "arb"}, optional
-        The ball arithmetic of every enclosure: float balls (:mod:`rotorlyap.methods.balls`, the
-        default, :data:`rotorlyap.analysis.enclosure.DEFAULT_ARITHMETIC`) or Arb balls (the
-        reference, about ten times slower). Both are rigorous.
+    arithmetic : {"auto", "balls", "arb"}, optional
+        The ball arithmetic of every enclosure: float balls (:mod:`rotorlyap.methods.balls`), Arb
+        balls (the reference) or ``"auto"`` (the default,
+        :data:`rotorlyap.analysis.enclosure.DEFAULT_ARITHMETIC`: Arb where the equations do not
+        depend on the azimuth, a hover proof on one interval, float balls elsewhere, 25 times
+        faster for the forward-flight proof). Both are rigorous.
 
     Returns
     -------
@@ -249,7 +251,7 @@ def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8, arithmetic
         The largest bound to prove, scaled norm (default: the design's).
     n_bisect : int
         Bisection steps on the bound.
-    arithmetic : {"balls", "arb"}, optional
+    arithmetic : {"auto", "balls", "arb"}, optional
         As :func:`prove_blade`.
 
     Returns
