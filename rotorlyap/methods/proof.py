@@ -163,19 +163,15 @@ def lyapunov_enclosure(solution) -> Callable[[int], tuple[np.ndarray, np.ndarray
     return enclose
 
 
-def _scaled_matrix(J, a: np.ndarray) -> np.ndarray:
-    """Balls of ``diag(1/a) J diag(a)`` (J balls (N, n, n))."""
-    out = np.empty(J.shape, dtype=object)
-    n = a.size
-    for i in range(n):
-        for j in range(n):
-            out[:, i, j] = (J[:, i, j] * float(a[j])) / float(a[i])
-    return out
+def _scaled_matrix(J, a: np.ndarray):
+    """Balls of ``diag(1/a) J diag(a)`` (J balls (N, n, n)): each entry times ``a_j``, then
+    divided by ``a_i`` (two rounded operations, as an entry at a time)."""
+    return (J * a[None, None, :]) / a[None, :, None]
 
 
 def _quadratic_form_matrix(S, X):
     """``X^T S + S X`` (balls (N, n, n))."""
-    SX = np.matmul(S, X)
+    SX = iv.matmul(S, X)
     return SX + np.swapaxes(SX, -1, -2)
 
 
@@ -194,19 +190,19 @@ class _Base:
     def __init__(self, system: ProofSystem, quadratic, a: np.ndarray, N: int):
         self.system, self.a, self.N = system, a, N
         S, dS = quadratic(N)
-        self.S = np.asarray(S, dtype=object)
-        self.dS = np.asarray(dS, dtype=object)
+        self.S = iv.asballs(S)
+        self.dS = iv.asballs(dS)
         self.s_lo, self.s_hi = iv.symmetric_eigenvalue_bounds(self.S)
         g0, self.blocked = system.residual(N)
-        self.J0y = _scaled_matrix(np.asarray(system.linear(N), dtype=object), a)
-        g0y = np.asarray(g0, dtype=object) / a[None, :]
+        self.J0y = _scaled_matrix(iv.asballs(system.linear(N)), a)
+        g0y = iv.asballs(g0) / a[None, :]
         _, self.m_hi = iv.symmetric_eigenvalue_bounds(self.dS + _quadratic_form_matrix(self.S, self.J0y))
-        self.e = iv.norm_upper(np.matmul(self.S, g0y[:, :, None])[:, :, 0])  # |S g0|
+        self.e = iv.norm_upper(iv.matmul(self.S, g0y[:, :, None])[:, :, 0])  # |S g0|
 
     def nonlinear(self, bound: float):
         """``n`` per interval (upper bound of ``lambda_max(S' + K^T S + S K)``), ``K`` scaled, blocked."""
         K, blocked = self.system.averaged_jacobian(self.N, bound * self.a)
-        Ky = _scaled_matrix(np.asarray(K, dtype=object), self.a)
+        Ky = _scaled_matrix(iv.asballs(K), self.a)
         _, n_hi = iv.symmetric_eigenvalue_bounds(self.dS + _quadratic_form_matrix(self.S, Ky))
         return n_hi, Ky, blocked
 
