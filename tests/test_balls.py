@@ -21,7 +21,6 @@ import warnings
 
 import numpy as np
 import pytest
-import sympy as sp
 from flint import arb, ctx
 
 from rotorlyap.conventions import DEFAULT_SCALES
@@ -186,18 +185,13 @@ def test_overflow_and_nan_never_give_a_finite_bound():
 def test_jets_on_float_balls_enclose_values_gradients_and_hessians_of_a_composite_function():
     """f = sin(x y) + sqrt(1 + x^2) / (2 + cos y) - x / y + atan-free: as tests/test_proof.py for Arb,
     with the Jet on float balls, and the float balls no wider than 1e-12 beyond the Arb ones."""
-    X, Y = sp.symbols("x y")
-    expr = sp.sin(X * Y) + sp.sqrt(1 + X**2) / (2 + sp.cos(Y)) - X / Y
-    grad = [sp.diff(expr, v) for v in (X, Y)]
-    hess = [[sp.diff(expr, u, v) for v in (X, Y)] for u in (X, Y)]
-    f = sp.lambdify((X, Y), [expr, grad, hess])
-    mid = np.array([[0.3, 1.2], [-0.7, 2.5], [1.5, -0.8]])
-    rad = np.array([0.05, 0.02])
+    from test_proof import composite_function
+
+    f, mid, rad, enclose = composite_function()
     outs = {}
     for a in ("balls", "arb"):
         with iv.arithmetic(a):
-            x, y = iv.variables([iv.balls(mid[:, 0], rad[0]), iv.balls(mid[:, 1], rad[1])], order=2)
-            outs[a] = iv.sin(x * y) + iv.sqrt(1 + x * x) / (2 + iv.cos(y)) - x / y
+            outs[a] = enclose()
     out = outs["balls"]
     assert isinstance(out.v, Balls) and isinstance(out.h, Balls)
     lo = [iv.lower(t) for t in (out.v, out.d, out.h)]
@@ -218,27 +212,13 @@ def test_jets_on_float_balls_enclose_values_gradients_and_hessians_of_a_composit
 
 def _check_blade(blade, tab, n, radius, n_samples=40):
     from rotorlyap.analysis.enclosure import BladeEnclosure
+    from test_proof import _check_blade_box
 
-    ev = BladeEnclosure(blade, tab, arithmetic="balls").evaluate(n, radius=radius)
-    assert isinstance(ev.jacobian, Balls) and not ev.blocked
-    lo_v, hi_v = iv.lower(ev.value), iv.upper(ev.value)
-    lo_j, hi_j = iv.lower(ev.jacobian), iv.upper(ev.jacobian)
-    rng = np.random.default_rng(RNG_SEED)
-    k = rng.integers(0, n, n_samples)
-    psi = 2 * np.pi * (k + rng.uniform(0, 1, k.size)) / n
-    if tab is None:
-        xi, dxi = np.broadcast_to(blade.equilibrium(), (k.size, 6)), np.zeros((k.size, 6))
-    else:
-        xi, dxi = tab.xi(psi), tab.dxi(psi)
-    z = xi + radius * rng.uniform(-1, 1, (k.size, 6))
-    value = blade.rhs(psi, z) - dxi
-    scale = np.abs(value).max() + 1.0
-    assert np.all(lo_v[k] - 1e-12 * scale <= value) and np.all(value <= hi_v[k] + 1e-12 * scale)
-    J = blade.jacobian(psi, z)  # central differences: about 1e-8 relative
-    slack = 1e-6 * (np.abs(J).max() + 1.0)
-    assert np.all(lo_j[k] - slack <= J) and np.all(J <= hi_j[k] + slack)
+    ev = _check_blade_box(blade, tab, n, radius, n_samples, arithmetic="balls")
+    assert isinstance(ev.jacobian, Balls)
     ref = BladeEnclosure(blade, tab, arithmetic="arb").evaluate(n, radius=radius)
-    w, w_ref = hi_j - lo_j, iv.upper(ref.jacobian) - iv.lower(ref.jacobian)
+    w = iv.upper(ev.jacobian) - iv.lower(ev.jacobian)
+    w_ref = iv.upper(ref.jacobian) - iv.lower(ref.jacobian)
     assert np.max(w / np.maximum(w_ref, 1e-300)) < 1.1  # about as tight as Arb
 
 

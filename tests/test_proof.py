@@ -50,18 +50,29 @@ def _inside(x: float, ball, slack: float = 0.0) -> bool:
 # Ball arithmetic
 # --------------------------------------------------------------------------------------
 
-def test_jets_enclose_values_gradients_and_hessians_of_a_composite_function():
-    """f = sin(x y) + sqrt(1 + x^2) / (2 + cos y) - x / y: the Jet over a box contains the exact
-    value, gradient and Hessian (sympy) at random points of the box."""
+def composite_function():
+    """f = sin(x y) + sqrt(1 + x^2) / (2 + cos y) - x / y: ``(exact, mid, rad, enclose)``, the exact
+    value, gradient and Hessian (sympy, lambdified), three boxes (midpoints, radii) and the Jet of
+    f over them in the current arithmetic (``enclose()``)."""
     X, Y = sp.symbols("x y")
     expr = sp.sin(X * Y) + sp.sqrt(1 + X**2) / (2 + sp.cos(Y)) - X / Y
     grad = [sp.diff(expr, v) for v in (X, Y)]
     hess = [[sp.diff(expr, u, v) for v in (X, Y)] for u in (X, Y)]
-    f = sp.lambdify((X, Y), [expr, grad, hess])
     mid = np.array([[0.3, 1.2], [-0.7, 2.5], [1.5, -0.8]])
     rad = np.array([0.05, 0.02])
-    x, y = iv.variables([iv.balls(mid[:, 0], rad[0]), iv.balls(mid[:, 1], rad[1])], order=2)
-    out = iv.sin(x * y) + iv.sqrt(1 + x * x) / (2 + iv.cos(y)) - x / y
+
+    def enclose():
+        x, y = iv.variables([iv.balls(mid[:, 0], rad[0]), iv.balls(mid[:, 1], rad[1])], order=2)
+        return iv.sin(x * y) + iv.sqrt(1 + x * x) / (2 + iv.cos(y)) - x / y
+
+    return sp.lambdify((X, Y), [expr, grad, hess]), mid, rad, enclose
+
+
+def test_jets_enclose_values_gradients_and_hessians_of_a_composite_function():
+    """f = sin(x y) + sqrt(1 + x^2) / (2 + cos y) - x / y: the Jet over a box contains the exact
+    value, gradient and Hessian (sympy) at random points of the box."""
+    f, mid, rad, enclose = composite_function()
+    out = enclose()
     rng = np.random.default_rng(RNG_SEED)
     for k in range(mid.shape[0]):
         for _ in range(50):
@@ -123,8 +134,10 @@ def test_hermite_enclosure_contains_the_interpolant_and_its_derivatives():
 # The blade's enclosures
 # --------------------------------------------------------------------------------------
 
-def _check_blade_box(blade, tab, n, radius, n_samples=40):
-    enc = BladeEnclosure(blade, tab)
+def _check_blade_box(blade, tab, n, radius, n_samples=40, arithmetic=None):
+    """The enclosure (``arithmetic`` as BladeEnclosure takes it) contains the float right-hand
+    side and its central-difference Jacobian at random states of the box; returns it."""
+    enc = BladeEnclosure(blade, tab, arithmetic=arithmetic)
     ev = enc.evaluate(n, radius=radius)
     assert not ev.blocked
     lo_v, hi_v = iv.lower(ev.value), iv.upper(ev.value)
@@ -143,6 +156,7 @@ def _check_blade_box(blade, tab, n, radius, n_samples=40):
     J = blade.jacobian(psi, z)  # central differences: about 1e-8 relative
     slack = 1e-6 * (np.abs(J).max() + 1.0)
     assert np.all(lo_j[k] - slack <= J) and np.all(J <= hi_j[k] + slack)
+    return ev
 
 
 def test_blade_enclosure_contains_the_float_model_in_hover():

@@ -119,6 +119,33 @@ class _Table:
         self.whole = [(iv.hull(v.min(), v.max())[()], iv.hull(lo.min(), hi.max())[()] * self.fac)
                       for v, lo, hi in zip(self.nodes, self.d_lo, self.d_hi)]
 
+    def _spans(self, lo_f: np.ndarray, hi_f: np.ndarray, many: np.ndarray):
+        """For the balls ``many`` that touch several segments (``lo_f``, ``hi_f`` their first and
+        last segment, floats): chunks of at most ``_GATHER`` gathered nodes, each ``(idx, hulls)``
+        with ``idx`` positions in ``lo_f`` and per coefficient the floats ``(smallest node value,
+        largest node value, smallest segment slope, largest segment slope)`` over each ball's
+        segments (slopes per segment, outward rounded)."""
+        n = self.n
+        start = 0
+        while start < many.size:
+            span = (hi_f[many[start:]] - lo_f[many[start:]]).astype(np.int64) + 1
+            stop = start + max(1, int(np.searchsorted(np.cumsum(span), self._GATHER)))
+            idx = many[start:stop]
+            k = span[:stop - start]
+            first = lo_f[idx].astype(np.int64)
+            seg_start = np.concatenate([[0], np.cumsum(k)[:-1]])
+            seg = (np.repeat(first, k) + np.arange(k.sum()) - np.repeat(seg_start, k)) % n
+            node_start = np.concatenate([[0], np.cumsum(k + 1)[:-1]])
+            node = (np.repeat(first, k + 1) + np.arange((k + 1).sum()) - np.repeat(node_start, k + 1)) % n
+            hulls = []
+            for c in range(3):
+                v = self.nodes[c][node]
+                hulls.append((np.minimum.reduceat(v, node_start), np.maximum.reduceat(v, node_start),
+                              np.minimum.reduceat(self.d_lo[c][seg], seg_start),
+                              np.maximum.reduceat(self.d_hi[c][seg], seg_start)))
+            yield idx, hulls
+            start = stop
+
     def _lookup_balls(self, alpha: Balls) -> list:
         """:meth:`lookup` for float balls: the same cases, vectorised."""
         shape, flat = alpha.shape, alpha.reshape(-1)
@@ -146,25 +173,9 @@ class _Table:
                 v0 = Balls(self.nodes[c][i])
                 dv = Balls(self.nodes[c][i + 1]) - v0
                 put(c, f[one], v0 + frac * dv, dv * self.fac)
-        many = np.flatnonzero(~whole & ~one)
-        start = 0
-        while start < many.size:  # chunks of at most _GATHER gathered nodes
-            span = (hi_f[many[start:]] - lo_f[many[start:]]).astype(np.int64) + 1
-            stop = start + max(1, int(np.searchsorted(np.cumsum(span), self._GATHER)))
-            idx = many[start:stop]
-            k = span[:stop - start]
-            first = lo_f[idx].astype(np.int64)
-            seg_start = np.concatenate([[0], np.cumsum(k)[:-1]])
-            seg = (np.repeat(first, k) + np.arange(k.sum()) - np.repeat(seg_start, k)) % n
-            node_start = np.concatenate([[0], np.cumsum(k + 1)[:-1]])
-            node = (np.repeat(first, k + 1) + np.arange((k + 1).sum()) - np.repeat(node_start, k + 1)) % n
-            for c in range(3):
-                v = self.nodes[c][node]
-                val = iv.hull(np.minimum.reduceat(v, node_start), np.maximum.reduceat(v, node_start))
-                slope = iv.hull(np.minimum.reduceat(self.d_lo[c][seg], seg_start),
-                                np.maximum.reduceat(self.d_hi[c][seg], seg_start)) * self.fac
-                put(c, f[idx], val, slope)
-            start = stop
+        for idx, hulls in self._spans(lo_f, hi_f, np.flatnonzero(~whole & ~one)):
+            for c, (vmin, vmax, dmin, dmax) in enumerate(hulls):
+                put(c, f[idx], iv.hull(vmin, vmax), iv.hull(dmin, dmax) * self.fac)
         return [(Balls._new(a.reshape(shape), b.reshape(shape)), Balls._new(d.reshape(shape), e.reshape(shape)))
                 for a, b, d, e in vm]
 
@@ -197,24 +208,10 @@ class _Table:
                 dv = iv.balls(self.nodes[c][i + 1]) - v0
                 val[f[one]] = v0 + frac * dv
                 slope[f[one]] = dv * self.fac
-        many = np.flatnonzero(~whole & ~one)
-        start = 0
-        while start < many.size:  # chunks of at most _GATHER gathered nodes
-            span = (hi_f[many[start:]] - lo_f[many[start:]]).astype(np.int64) + 1
-            stop = start + max(1, int(np.searchsorted(np.cumsum(span), self._GATHER)))
-            idx = many[start:stop]
-            k = span[:stop - start]
-            first = lo_f[idx].astype(np.int64)
-            seg_start = np.concatenate([[0], np.cumsum(k)[:-1]])
-            seg = (np.repeat(first, k) + np.arange(k.sum()) - np.repeat(seg_start, k)) % n
-            node_start = np.concatenate([[0], np.cumsum(k + 1)[:-1]])
-            node = (np.repeat(first, k + 1) + np.arange((k + 1).sum()) - np.repeat(node_start, k + 1)) % n
-            for c, (val, slope) in enumerate(out):
-                v = self.nodes[c][node]
-                val[f[idx]] = iv.hull(np.minimum.reduceat(v, node_start), np.maximum.reduceat(v, node_start))
-                slope[f[idx]] = iv.hull(np.minimum.reduceat(self.d_lo[c][seg], seg_start),
-                                        np.maximum.reduceat(self.d_hi[c][seg], seg_start)) * self.fac
-            start = stop
+        for idx, hulls in self._spans(lo_f, hi_f, np.flatnonzero(~whole & ~one)):
+            for c, ((val, slope), (vmin, vmax, dmin, dmax)) in enumerate(zip(out, hulls)):
+                val[f[idx]] = iv.hull(vmin, vmax)
+                slope[f[idx]] = iv.hull(dmin, dmax) * self.fac
         return [(val.reshape(shape), slope.reshape(shape)) for val, slope in out]
 
     def __call__(self, alpha: Jet, tape: "_Slopes") -> tuple:
