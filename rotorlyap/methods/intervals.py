@@ -568,7 +568,7 @@ def psi_intervals(n: int):
     """Balls containing the ``n`` uniform azimuth intervals ``[2 pi k / n, 2 pi (k + 1) / n]`` of
     one period, shape (n,)."""
     k = np.arange(n, dtype=float)
-    return hull(k / n, (k + 1) / n) * (_TWO_PI if _arb_mode() else fb._PI * 2.0)
+    return hull(k / n, (k + 1) / n) * (pi() * 2.0)
 
 
 def hermite_enclosure(values: np.ndarray, slopes: np.ndarray, n: int, *, centre: bool = False,

@@ -350,7 +350,7 @@ def technical_stability(
         designed to decrease on a shell (:mod:`rotorlyap.methods.scenario`), whose ``W`` has
         several local extrema on a sphere: the searches of ``W`` (the level ``alpha``, the start
         radii and ``rho``) then refine 64 of the best samples for 200 iterations, not
-        ``n_refine`` for ``n_iter``, the 32 best minima on the sphere are polished by L-BFGS-B,
+        ``n_refine`` for ``n_iter``, the 32 best minima on the sphere are polished (:func:`rotorlyap.methods.polish.polish`),
         and the level is set :data:`SHELL_LEVEL_MARGIN` below the smallest ``W`` found.
     test_directions : array_like, optional
         Shape ``(k, n)``: the *practical reading*. Spheres are represented only by the states
@@ -738,7 +738,7 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         Without ``per_psi``: the best ``n_polish`` samples are refined by the batched ascent
         (split evenly between the levels with ``starts="levels"``).
     n_lbfgs : int
-        Of those, the best ``n_lbfgs`` are polished one by one by L-BFGS-B (:func:`_polish`;
+        Of those, the best ``n_lbfgs`` are polished, all at once (:func:`rotorlyap.methods.polish.polish`;
         with ``per_psi``, the one of each azimuth). On the blade's optimised hover functions the
         largest ``W'`` sits in a small cap near the flap axis, which 16 polished candidates miss
         and 256 find; the final check of :func:`technical_stability` polishes 256.
@@ -815,7 +815,7 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     if not per_psi and ext.value.size > n_lbfgs:  # the batched ascent refined them all;
         top = np.argsort(-ext.value)[:n_lbfgs]    # quasi-Newton for the best of those
         ext = Extremum(ext.value[top], ext.psi[top], ext.x[top])
-    value, p_best, y_best = _polish(g, ext, free_psi=not (per_psi or autonomous))
+    value, p_best, y_best = polish(g, ext, free_psi=not (per_psi or autonomous))
     if per_psi:
         return Extremum(value, p_best, state(p_best, y_best))
     if n_sweep > 0 and not autonomous:
@@ -828,7 +828,7 @@ def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_
                    n_candidates: int = 256):
     """Each candidate ``(psi_i, y_i)`` evaluated at ``n_sweep`` azimuths of the period with its
     ``y`` kept (all candidates in blocks of one vectorised call); the best ``n_keep`` new
-    points polished by :func:`_polish` with the azimuth free. Returns (values, psi, y) of the
+    points polished (:func:`rotorlyap.methods.polish.polish`) with the azimuth free. Returns (values, psi, y) of the
     candidates, each never worse than before."""
     grid = period * np.arange(n_sweep) / n_sweep
     value, psi, y = value.copy(), psi.copy(), y.copy()
@@ -844,17 +844,10 @@ def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_
     best = np.argsort(-new_v)[:n_keep]
     best = best[new_v[best] > -np.inf]
     start = Extremum(new_v[best], new_p[best], y[best])
-    v2, p2, y2 = _polish(fun, start, free_psi=True)
+    v2, p2, y2 = polish(fun, start, free_psi=True)
     better = v2 > value[best]
     value[best[better]], psi[best[better]], y[best[better]] = v2[better], p2[better], y2[better]
     return value, psi, y
-
-
-def _polish(fun: Function, start, *, free_psi: bool, maxiter: int = 100):
-    """Local maximisation of ``fun(psi, y)`` (``|y| = t`` in ``[T_MIN, 1]``, the direction free)
-    from every start of ``start`` (an Extremum) at once: :func:`rotorlyap.methods.polish.polish`.
-    Returns (values, psi, y), never worse than the starts."""
-    return polish(fun, start, free_psi=free_psi, maxiter=maxiter)
 
 
 def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_shells, n_bisect,
@@ -886,12 +879,12 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         if not shell:
             return float(sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False,
                                          free_psi=free, **w_common).value[0])
-        # the best 32 refined minima polished by L-BFGS-B (the direction and the azimuth free)
+        # the best 32 refined minima polished (the direction and the azimuth free)
         ext = sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False, free_psi=free,
                               keep=32, **w_common)
         on_sphere = lambda p, y: -sys.w(p, (r * y / np.linalg.norm(y, axis=1, keepdims=True)) * scales)  # noqa: E731
         start = Extremum(-ext.value, ext.psi, ext.x / scales / r)
-        value, _, _ = _polish(on_sphere, start, free_psi=free)
+        value, _, _ = polish(on_sphere, start, free_psi=free)
         # the level 0.1 % below the smallest W found: a search that misses the true minimum of a
         # W without closed form by a little must not put the level above it
         return float(min(ext.value.min(), -value.max())) * (1.0 - SHELL_LEVEL_MARGIN)
