@@ -34,6 +34,7 @@ from numpy.typing import NDArray
 
 from ..jit import PARALLEL_MIN_STATES, jit_parallel, prange, threads, use_compiled
 from ..jit import jit as _jit
+from ._generated import blade_block as _block
 from ._generated import blade_scalar as _scalar
 from .compressibility import WAVE_DRAG_FACTOR
 
@@ -76,9 +77,13 @@ class KernelData:
         (rad), load factors and the inflow coefficients (m/s).
     table : numpy.ndarray, shape (table_size, 6)
         Airfoil table: values and increments of cl, cd and cm, one row per grid point.
+    block : bool
+        :func:`rhs` and :func:`energy_rate` run the block kernels (states innermost,
+        vectorised); True unless a station's pretwist exceeds ``_MAX_TWIST`` (then the
+        one-state kernels run). Set it False to run the one-state kernels.
     """
 
-    __slots__ = ("P", "scalars", "stations", "table")
+    __slots__ = ("P", "scalars", "stations", "table", "block")
 
     def __init__(self, eq: BladeEquations, table: FloatArray):
         p = eq.params
@@ -93,6 +98,7 @@ class KernelData:
             comp.mach_cap, comp.critical_mach_zero_lift])
         self.stations = stations
         self.table = table
+        self.block = bool(np.all(np.abs(stations[_PHI]) < _MAX_TWIST))
 
 
 def kernel_data(eq: BladeEquations) -> KernelData | None:
@@ -366,6 +372,406 @@ def _energy_value_parallel(psi, x, xi, ps, ctrl, P, sc, out, n_chunks):
         _energy_value_range(psi, x, xi, ps, ctrl, P, sc, out, c * n // n_chunks, (c + 1) * n // n_chunks)
 
 
+# --------------------------------------------------------------------------------------
+# Block kernels: a block of states innermost, vectorised by LLVM (issue 27)
+# --------------------------------------------------------------------------------------
+# Every quantity of a block of _B states is a row of one workspace W (float64): row r of state
+# i at W[r * _B + i]. The offsets are compile-time constants (numba freezes module globals),
+# so LLVM sees one array with constant distances between the rows, needs no runtime alias
+# checks, and vectorises the loops over the states (AVX-512 / AVX2: 8 / 4 states a register).
+# The generated block code (_generated/blade_block.py) fills the rows of the terms T.
+
+_B = _block.BLOCK
+_IN = _block.IN_ROW * _B                      # inputs of the generated block code
+_TRIG = _block.TRIG_ROW * _B                  # cos/sin of beta, zeta, theta (_block.TRIG order)
+_T = _block.OUT_ROW * _B                      # row k of the generated terms at _T + k * _B
+_ROW0 = _block.OUT_ROW + 49                   # first row of the kernels' own quantities
+
+
+def _rows(*counts):
+    """Offsets of consecutive groups of rows (``counts`` rows each) from row _ROW0."""
+    offsets, r = [], _ROW0
+    for c in counts:
+        offsets.append(r * _B)
+        r += c
+    return offsets, r
+
+
+((_CPSI, _SPSI, _F0, _F1, _F2, _SFY, _SFZ, _MX, _MY, _MZ, _UY, _UZ, _V2, _VM, _U0, _IDX, _FRAC,
+  _CL, _CD, _CM, _A0, _A1, _A2, _XQ, _D, _PS1, _DW), _ROWS) = _rows(*([1] * 23), 3, 6, 13, 1)
+# _XQ: x_q (3 rows); _D: xi' (6 rows); _PS1: rows 1-13 of the potential terms at the steady motion
+_PS = _PS1 - _B                               # row r of the potential terms at _PS + r * _B
+_TRIG_ORDER = (("cos", "beta"), ("sin", "beta"), ("cos", "zeta"), ("sin", "zeta"),
+               ("cos", "theta"), ("sin", "theta"))
+assert _block.TRIG == _TRIG_ORDER and _block.TRIG_ROW - _block.IN_ROW >= 10
+_PI = math.pi
+_HALF_PI = 0.5 * math.pi
+_TWO_PI = 2.0 * math.pi
+_MAX_TWIST = 3.0
+"""Largest pretwist (rad) of a station for the block kernels: their reduction of the angle of
+attack to [0, 2 pi) subtracts or adds 2 pi once, exact for angles in [-2 pi, 4 pi)."""
+
+
+@_jit(inline="always", error_model="numpy")
+def _atan2(y, x):
+    """``atan2(y, x)`` without branches, so that a loop over states vectorises.
+
+    SLEEF's ``atan2k`` (Shibata's polynomial of degree 19 in ``s^2`` on ``|s| <= 1``,
+    https://sleef.org), evaluated by Estrin's scheme; signed zeros and zero arguments as C's
+    ``atan2``. Error against the C library's atan2: at most 2 ulp, 0.27 ulp on average, over
+    2e6 random arguments spanning 12 decades (benchmarks/bench_simd.py); infinite arguments are
+    not handled (both infinite gives nan)."""
+    ay = abs(y)
+    ax = abs(x)
+    swap = ay > ax
+    num = -ax if swap else ay
+    den = ay if swap else ax
+    q = -2.0 if x < 0.0 else 0.0
+    q = q + 1.0 if swap else q
+    s = num / den
+    t = s * s
+    t2 = t * t
+    t4 = t2 * t2
+    t8 = t4 * t4
+    t16 = t8 * t8
+    p0 = ((-0.333333333333311110369124 + t * 0.199999999996591265594148)
+          + t2 * (-0.14285714266771329383765 + t * 0.111111105648261418443745))
+    p1 = ((-0.090908995008245008229153 + t * 0.0769219538311769618355029)
+          + t2 * (-0.0666573579361080525984562 + t * 0.0587666392926673580854313))
+    p2 = ((-0.0523674852303482457616113 + t * 0.0466667150077840625632675)
+          + t2 * (-0.0407629191276836500001934 + t * 0.0337852580001353069993897))
+    p3 = ((-0.0254517624932312641616861 + t * 0.016599329773529201970117)
+          + t2 * (-0.00889896195887655491740809 + t * 0.00370026744188713119232403))
+    p4 = ((-0.00110611831486672482563471 + t * 0.000209850076645816976906797)
+          + t2 * -1.88796008463073496563746e-05)
+    u = (p0 + t4 * p1) + t8 * (p2 + t4 * p3) + t16 * p4
+    r = u * t * s + s
+    r = q * _HALF_PI + r
+    r = -r if x < 0.0 else r
+    r = (_PI if math.copysign(1.0, x) < 0.0 else 0.0) if y == 0.0 else r
+    r = _HALF_PI if (x == 0.0 and y != 0.0) else r
+    return math.copysign(r, y) if y == y else r
+
+
+@_jit(error_model="numpy")
+def _atan2_array(y, x, out):
+    """``out[i] = _atan2(y[i], x[i])`` (for the measurement of its error)."""
+    for i in range(y.shape[0]):
+        out[i] = _atan2(y[i], x[i])
+
+
+@_jit(error_model="numpy")
+def _trig_rows(n, W):
+    """The cosines and sines of the hinge angles (input rows 0-2) into the rows _TRIG."""
+    for i in range(n):
+        b = W[_IN + i]
+        z = W[_IN + _B + i]
+        t = W[_IN + 2 * _B + i]
+        W[_TRIG + i] = math.cos(b)
+        W[_TRIG + _B + i] = math.sin(b)
+        W[_TRIG + 2 * _B + i] = math.cos(z)
+        W[_TRIG + 3 * _B + i] = math.sin(z)
+        W[_TRIG + 4 * _B + i] = math.cos(t)
+        W[_TRIG + 5 * _B + i] = math.sin(t)
+
+
+@_jit(error_model="numpy")
+def _accelerations_block(n, W, sc, st, tab):
+    """``q''`` (rows _A0-_A2) of the ``n`` states of ``W``: :func:`_accelerations` with the
+    states innermost. Reads the terms (rows _T), z3-z5 (input rows 3-5), cos/sin psi.
+
+    The same operations in the same order as :func:`_accelerations` but ``atan2``
+    (:func:`_atan2`); the flags' branches are selects (both sides computed, the same one
+    taken). Per station three loops: the wind, the angle of attack and the table index
+    (vectorised); the table rows (a scalar loop: LLVM does not vectorise a gather from a
+    second array without alias checks); the loads and their moments (vectorised).
+    """
+    om = sc[_OMEGA]
+    c0 = sc[_C0]
+    c1 = sc[_C1]
+    c2 = sc[_C2]
+    for i in range(n):
+        W[_F0 + i] = W[_T + 6 * _B + i] - c0 * W[_IN + 3 * _B + i]
+        W[_F1 + i] = W[_T + 7 * _B + i] - c1 * W[_IN + 4 * _B + i]
+        W[_F2 + i] = W[_T + 8 * _B + i] - c2 * W[_IN + 5 * _B + i]
+    if sc[_ACTIVE] != 0.0:
+        muVR = sc[_MUVR]
+        free = muVR != 0.0
+        uniform = sc[_UNIFORM] != 0.0
+        twisted = sc[_TWISTED] != 0.0
+        damped = sc[_PITCH_DAMPED] != 0.0
+        compressible = sc[_COMPRESSIBLE] != 0.0
+        inv_a = sc[_INV_A]
+        mach_cap = sc[_MACH_CAP]
+        mcrit0 = sc[_MCRIT0]
+        n_tab = int(sc[_TABLE_N])
+        last = n_tab - 1.0
+        fac = n_tab / _TWO_PI
+        for i in range(n):
+            W[_SFY + i] = 0.0
+            W[_SFZ + i] = 0.0
+            W[_MX + i] = 0.0
+            W[_MY + i] = 0.0
+            W[_MZ + i] = 0.0
+        for k in range(st.shape[1]):
+            rx = st[_RX, k]
+            wy_k = st[_WY, k]
+            wz_k = st[_WZ, k]
+            ry_k = st[_RY, k]
+            rz_k = st[_RZ, k]
+            phi = st[_PHI, k]
+            qn_k = st[_QN, k]
+            mn_k = st[_MN, k]
+            dn_k = st[_DN, k]
+            ia = st[_IA, k]
+            ib = st[_IB, k]
+            for i in range(n):
+                # StripAerodynamics.wind
+                cpsi = W[_CPSI + i]
+                az_psi = ia + ib * cpsi
+                az = ia if uniform else az_psi
+                ax = muVR * cpsi
+                ay = -muVR * W[_SPSI + i]
+                t38 = W[_T + 38 * _B + i]
+                t41 = W[_T + 41 * _B + i]
+                air_y_free = (W[_T + 36 * _B + i] * ax + W[_T + 37 * _B + i] * ay) + t38 * az
+                air_z_free = (W[_T + 39 * _B + i] * ax + W[_T + 40 * _B + i] * ay) + t41 * az
+                air_y = air_y_free if free else t38 * az
+                air_z = air_z_free if free else t41 * az
+                wx = W[_T + 12 * _B + i]
+                u_y = air_y - (W[_T + 10 * _B + i] + W[_T + 14 * _B + i] * rx - wx * wz_k)
+                u_z = air_z - (W[_T + 11 * _B + i] + wx * wy_k - W[_T + 13 * _B + i] * rx)
+                # StripAerodynamics.loads: the angle of attack and the table index
+                V2 = u_y * u_y + u_z * u_z
+                alpha = _atan2(u_z, -u_y)
+                alpha_twisted = alpha + phi
+                alpha = alpha_twisted if twisted else alpha
+                u = alpha + _PI
+                u = u - _TWO_PI if u >= _TWO_PI else (u + _TWO_PI if u < 0.0 else u)
+                W[_U0 + i] = u
+                u = u * fac
+                fl = np.floor(u)
+                fl = fl if fl < last else last
+                W[_IDX + i] = fl
+                W[_FRAC + i] = u - fl
+                W[_UY + i] = u_y
+                W[_UZ + i] = u_z
+                W[_V2 + i] = V2
+                W[_VM + i] = math.sqrt(V2)
+            for i in range(n):
+                # Airfoil.coefficients (table)
+                fl = W[_IDX + i]
+                j = int(fl) if fl >= 0.0 else 0
+                u = W[_FRAC + i]
+                W[_CL + i] = tab[j, 0] + u * tab[j, 1]
+                W[_CD + i] = tab[j, 2] + u * tab[j, 3]
+                W[_CM + i] = tab[j, 4] + u * tab[j, 5]
+            for i in range(n):
+                cl = W[_CL + i]
+                cd = W[_CD + i]
+                cm = W[_CM + i]
+                Vm = W[_VM + i]
+                V2 = W[_V2 + i]
+                u_y = W[_UY + i]
+                u_z = W[_UZ + i]
+                u0 = W[_U0 + i]
+                # compressibility.apply_to_coefficients
+                mach = Vm * inv_a
+                me = mach if mach < mach_cap else mach_cap
+                forward = (u0 >= 0.5 * _PI) & (u0 <= 1.5 * _PI)
+                pg_forward = 1.0 / math.sqrt(1.0 - me * me)
+                pg = pg_forward if (compressible & forward) else 1.0
+                cl_c = cl * pg
+                cm_c = cm * pg
+                dm = mach - (mcrit0 - 0.1 * abs(cl_c))
+                cd_c = cd + _WAVE * (dm * dm) * (dm * dm)
+                cd_c = cd_c if dm > 0.0 else cd
+                cl = cl_c if compressible else cl
+                cm = cm_c if compressible else cm
+                cd = cd_c if compressible else cd
+                qn = qn_k * Vm
+                Fy = qn * (cd * u_y + cl * u_z)
+                Fz = qn * (cd * u_z - cl * u_y)
+                Mx_ac = mn_k * V2 * cm
+                q_rel = W[_T + 12 * _B + i] - om * W[_T + 35 * _B + i]
+                couple = dn_k * Vm * q_rel
+                couple = couple * pg if compressible else couple
+                Mx_ac = Mx_ac + couple if damped else Mx_ac
+                W[_SFY + i] += Fy
+                W[_SFZ + i] += Fz
+                W[_MX + i] += ry_k * Fz - rz_k * Fy + Mx_ac
+                W[_MY + i] -= rx * Fz
+                W[_MZ + i] += rx * Fy
+        for i in range(n):
+            # BladeEquations.project
+            sFy = W[_SFY + i]
+            sFz = W[_SFZ + i]
+            Mx = W[_MX + i]
+            My = W[_MY + i]
+            Mz = W[_MZ + i]
+            W[_F0 + i] = W[_F0 + i] + (W[_T + 18 * _B + i] * sFy + W[_T + 21 * _B + i] * sFz
+                                       + W[_T + 24 * _B + i] * Mx + W[_T + 27 * _B + i] * My
+                                       + W[_T + 30 * _B + i] * Mz)
+            W[_F1 + i] = W[_F1 + i] + (W[_T + 19 * _B + i] * sFy + W[_T + 22 * _B + i] * sFz
+                                       + W[_T + 25 * _B + i] * Mx + W[_T + 28 * _B + i] * My
+                                       + W[_T + 31 * _B + i] * Mz)
+            W[_F2 + i] = W[_F2 + i] + (W[_T + 20 * _B + i] * sFy + W[_T + 23 * _B + i] * sFz
+                                       + W[_T + 26 * _B + i] * Mx + W[_T + 29 * _B + i] * My
+                                       + W[_T + 32 * _B + i] * Mz)
+    s = 1.0 / (om * om)
+    for i in range(n):
+        # solve_sym3
+        a = W[_T + i]
+        bq = W[_T + _B + i]
+        c = W[_T + 2 * _B + i]
+        d = W[_T + 3 * _B + i]
+        e = W[_T + 4 * _B + i]
+        f = W[_T + 5 * _B + i]
+        F0 = W[_F0 + i]
+        F1 = W[_F1 + i]
+        F2 = W[_F2 + i]
+        A00 = d * f - e * e
+        A01 = c * e - bq * f
+        A02 = bq * e - c * d
+        A11 = a * f - c * c
+        A12 = bq * c - a * e
+        A22 = a * d - bq * bq
+        inv_det = 1.0 / (a * A00 + bq * A01 + c * A02)
+        W[_A0 + i] = (A00 * F0 + A01 * F1 + A02 * F2) * inv_det * s
+        W[_A1 + i] = (A01 * F0 + A11 * F1 + A12 * F2) * inv_det * s
+        W[_A2 + i] = (A02 * F0 + A12 * F1 + A22 * F2) * inv_det * s
+
+
+_rhs_terms_block = _jit(_block.rhs_terms_block, error_model="numpy")
+_rhs_dw_terms_block = _jit(_block.rhs_dw_terms_block, error_model="numpy")
+
+
+@_jit(error_model="numpy")
+def _rhs_block_range(psi, z, ctrl, P, sc, st, tab, out, start, stop):
+    """:func:`_rhs_range` by blocks of _B states (the states innermost, vectorised)."""
+    W = np.empty(_ROWS * _B)
+    cyclic = sc[_CYCLIC] != 0.0
+    for i0 in range(start, stop, _B):
+        n = min(_B, stop - i0)
+        for i in range(n):
+            p = psi[i0 + i]
+            cp = math.cos(p)
+            sp = math.sin(p)
+            W[_CPSI + i] = cp
+            W[_SPSI + i] = sp
+            W[_IN + 6 * _B + i] = ctrl[0] + ctrl[1] * cp + ctrl[2] * sp if cyclic else ctrl[0]
+            for c in range(6):
+                W[_IN + c * _B + i] = z[i0 + i, c]
+        _trig_rows(n, W)
+        _rhs_terms_block(n, P, W)
+        _accelerations_block(n, W, sc, st, tab)
+        for i in range(n):
+            out[i0 + i, 0] = z[i0 + i, 3]
+            out[i0 + i, 1] = z[i0 + i, 4]
+            out[i0 + i, 2] = z[i0 + i, 5]
+            out[i0 + i, 3] = W[_A0 + i]
+            out[i0 + i, 4] = W[_A1 + i]
+            out[i0 + i, 5] = W[_A2 + i]
+
+
+@jit_parallel(error_model="numpy")
+def _rhs_block_parallel(psi, z, ctrl, P, sc, st, tab, out, n_chunks):
+    n = z.shape[0]
+    for c in prange(n_chunks):
+        _rhs_block_range(psi, z, ctrl, P, sc, st, tab, out, c * n // n_chunks, (c + 1) * n // n_chunks)
+
+
+@_jit(error_model="numpy")
+def _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, start, stop):
+    """:func:`_energy_rate_range` by blocks of _B states (the states innermost, vectorised)."""
+    W = np.empty(_ROWS * _B)
+    cyclic = sc[_CYCLIC] != 0.0
+    om = sc[_OMEGA]
+    om2 = om * om
+    one = xi.shape[0] == 1
+    one_ps = ps.shape[0] == 1
+    c1 = ctrl[1]
+    c2 = ctrl[2]
+    for i0 in range(start, stop, _B):
+        n = min(_B, stop - i0)
+        for i in range(n):
+            g = i0 + i
+            j = 0 if one else g
+            k = 0 if one_ps else g
+            p = psi[g]
+            cp = math.cos(p)
+            sp = math.sin(p)
+            W[_CPSI + i] = cp
+            W[_SPSI + i] = sp
+            W[_IN + 6 * _B + i] = ctrl[0] + ctrl[1] * cp + ctrl[2] * sp if cyclic else ctrl[0]
+            for c in range(6):
+                W[_IN + c * _B + i] = x[g, c] + xi[j, c]
+                W[_D + c * _B + i] = dxi[j, c]
+            for c in range(3):
+                W[_IN + (7 + c) * _B + i] = x[g, 3 + c]
+                W[_XQ + c * _B + i] = x[g, c]
+            for r in range(1, 14):
+                W[_PS + r * _B + i] = ps[k, r]
+        _trig_rows(n, W)
+        _rhs_dw_terms_block(n, P, W)
+        _accelerations_block(n, W, sc, st, tab)
+        for i in range(n):
+            z3 = W[_IN + 3 * _B + i]
+            z4 = W[_IN + 4 * _B + i]
+            z5 = W[_IN + 5 * _B + i]
+            xr0 = W[_IN + 7 * _B + i]
+            xr1 = W[_IN + 8 * _B + i]
+            xr2 = W[_IN + 9 * _B + i]
+            d0 = W[_D + i]
+            d1 = W[_D + _B + i]
+            d2 = W[_D + 2 * _B + i]
+            g0 = W[_T + 42 * _B + i] + W[_T + 45 * _B + i] - W[_PS + _B + i]
+            g1 = W[_T + 43 * _B + i] + W[_T + 46 * _B + i] - W[_PS + 2 * _B + i]
+            g2 = W[_T + 44 * _B + i] + W[_T + 47 * _B + i] - W[_PS + 3 * _B + i]
+            t0 = W[_T + i]
+            t1 = W[_T + _B + i]
+            t2 = W[_T + 2 * _B + i]
+            t3 = W[_T + 3 * _B + i]
+            t4 = W[_T + 4 * _B + i]
+            t5 = W[_T + 5 * _B + i]
+            m0 = t0 * xr0 + t1 * xr1 + t2 * xr2
+            m1 = t1 * xr0 + t3 * xr1 + t4 * xr2
+            m2 = t2 * xr0 + t4 * xr1 + t5 * xr2
+            dW = (g0 * (z3 - d0) + g1 * (z4 - d1) + g2 * (z5 - d2)
+                  + om2 * (m0 * (W[_A0 + i] - W[_D + 3 * _B + i])
+                           + m1 * (W[_A1 + i] - W[_D + 4 * _B + i])
+                           + m2 * (W[_A2 + i] - W[_D + 5 * _B + i])))
+            xq0 = W[_XQ + i]
+            xq1 = W[_XQ + _B + i]
+            xq2 = W[_XQ + 2 * _B + i]
+            p4 = W[_PS + 4 * _B + i]
+            p5 = W[_PS + 5 * _B + i]
+            p6 = W[_PS + 6 * _B + i]
+            p7 = W[_PS + 7 * _B + i]
+            p8 = W[_PS + 8 * _B + i]
+            p9 = W[_PS + 9 * _B + i]
+            h0 = p4 * d0 + p5 * d1 + p6 * d2
+            h1 = p5 * d0 + p7 * d1 + p8 * d2
+            h2 = p6 * d0 + p8 * d1 + p9 * d2
+            dW_moving = dW + ((g0 * d0 + g1 * d1) + g2 * d2) - (h0 * xq0 + h1 * xq1 + h2 * xq2)
+            dW = dW if constant else dW_moving
+            dthc = -c1 * W[_SPSI + i] + c2 * W[_CPSI + i]
+            dW_cyclic = dW + dthc * (W[_T + 48 * _B + i] - W[_PS + 10 * _B + i]
+                                     - ((W[_PS + 11 * _B + i] * xq0 + W[_PS + 12 * _B + i] * xq1)
+                                        + W[_PS + 13 * _B + i] * xq2))
+            W[_DW + i] = dW_cyclic if cyclic else dW
+        for i in range(n):
+            out[i0 + i] = W[_DW + i]
+
+
+@jit_parallel(error_model="numpy")
+def _energy_rate_block_parallel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, n_chunks):
+    n = x.shape[0]
+    for c in prange(n_chunks):
+        _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out,
+                                 c * n // n_chunks, (c + 1) * n // n_chunks)
+
+
 def _run(serial, parallel, n: int, args: tuple) -> None:
     """Run a kernel over ``n`` states: ``serial(*args, 0, n)`` on one thread below
     PARALLEL_MIN_STATES states, else ``parallel(*args, chunks)`` over every thread."""
@@ -387,7 +793,10 @@ def rhs(eq: BladeEquations, data: KernelData, psi: FloatArray, z: FloatArray) ->
     args = (psi if psi.flags.c_contiguous else np.ascontiguousarray(psi),
             z if z.flags.c_contiguous else np.ascontiguousarray(z),
             _controls(eq), data.P, data.scalars, data.stations, data.table, out)
-    _run(_rhs_range, _rhs_parallel, n, args)
+    if data.block:
+        _run(_rhs_block_range, _rhs_block_parallel, n, args)
+    else:
+        _run(_rhs_range, _rhs_parallel, n, args)
     return out
 
 
@@ -412,7 +821,10 @@ def energy_rate(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatA
     args = (c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
             c(dxi, dtype=np.float64), c(ps, dtype=np.float64), _controls(eq), data.P,
             data.scalars, data.stations, data.table, bool(constant), out)
-    _run(_energy_rate_range, _energy_rate_parallel, n, args)
+    if data.block:
+        _run(_energy_rate_block_range, _energy_rate_block_parallel, n, args)
+    else:
+        _run(_energy_rate_range, _energy_rate_parallel, n, args)
     return out
 
 
