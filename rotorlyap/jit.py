@@ -65,21 +65,29 @@ def use_compiled() -> bool:
     return _numba is not None and kernel_mode() == "compiled"
 
 
-def jit(fn):
+def jit(fn=None, **options):
     """Compile ``fn`` with numba (``nopython``, cached on disk, releasing the GIL), or return
-    it unchanged when numba is not installed."""
+    it unchanged when numba is not installed.
+
+    ``options`` are further numba options (e.g. ``error_model="numpy"``: a division by zero
+    gives inf or nan instead of raising, which lets LLVM vectorise loops with divisions;
+    ``inline="always"``); ``jit(**options)`` returns the decorator."""
+    if fn is None:
+        return lambda f: jit(f, **options)
     if _numba is None:  # pragma: no cover
         return fn
-    return _numba.njit(cache=True, nogil=True)(fn)
+    return _numba.njit(cache=True, nogil=True, **options)(fn)
 
 
-def jit_parallel(fn):
+def jit_parallel(fn=None, **options):
     """Compile ``fn``, whose outer loop is a ``prange``, for all threads (numba's ``parallel``
     option; the number of threads is numba's, ``NUMBA_NUM_THREADS`` sets it), or return it
-    unchanged (a serial loop) when numba is not installed."""
+    unchanged (a serial loop) when numba is not installed. ``options`` as in :func:`jit`."""
+    if fn is None:
+        return lambda f: jit_parallel(f, **options)
     if _numba is None:  # pragma: no cover
         return fn
-    return _numba.njit(cache=True, nogil=True, parallel=True)(fn)
+    return _numba.njit(cache=True, nogil=True, parallel=True, **options)(fn)
 
 
 def threads() -> int:

@@ -211,9 +211,11 @@ def test_generated_code_broadcasts_over_leading_axes():
 
 @pytest.mark.slow
 def test_cached_code_is_current_and_equals_fresh_derivation():
-    """The cached generated file records the current derivation hash and equals a fresh
-    derivation byte for byte (deterministic output)."""
+    """The cached generated files (numpy, scalar and block code) record the current derivation
+    hash and equal a fresh derivation byte for byte (deterministic output)."""
     hint = "stale cache: run `python -m rotorlyap.model.derivation` and commit the generated file"
     assert gen.DERIVATION_HASH == derivation.derivation_hash(), hint
     assert gen.SYMPY_VERSION == sp.__version__, hint
     assert derivation.GENERATED_PATH.read_text() == derivation.generate_source(), hint
+    assert derivation.SCALAR_PATH.read_text() == derivation.generate_scalar_source(), hint
+    assert derivation.BLOCK_PATH.read_text() == derivation.generate_block_source(), hint

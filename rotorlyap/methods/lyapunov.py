@@ -351,7 +351,9 @@ def technical_stability(
         several local extrema on a sphere: the searches of ``W`` (the level ``alpha``, the start
         radii and ``rho``) then refine 64 of the best samples for 200 iterations, not
         ``n_refine`` for ``n_iter``, the 32 best minima on the sphere are polished (:func:`rotorlyap.methods.polish.polish`),
-        and the level is set :data:`SHELL_LEVEL_MARGIN` below the smallest ``W`` found.
+        and the level is set :data:`SHELL_LEVEL_MARGIN` below the smallest ``W`` found (the start
+        radii, with no closed form, where the largest ``W`` found reaches the level less the same
+        margin).
     test_directions : array_like, optional
         Shape ``(k, n)``: the *practical reading*. Spheres are represented only by the states
         ``rho * a * d / |d|`` for these directions ``d`` (in scaled coordinates), at the grid
@@ -1011,8 +1013,10 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
     if w_matrix is not None:
         lam_max = _extreme_eigenvalues(w_matrix, psi)[1]
         lambda0 = np.minimum(np.sqrt(c / lam_max), A_used)
-    else:
-        lambda0 = _start_radii(sys, psi, A_used, c, scales, dirs, w_common, n_radii, n_bisect)
+    else:  # searched: the level less the margin, so that a search that misses the true sup of W
+        # on a sphere by a little does not put the start ball across the level
+        lambda0 = _start_radii(sys, psi, A_used, c * (1.0 - SHELL_LEVEL_MARGIN), scales, dirs,
+                               w_common, n_radii, n_bisect)
     lambda0 = spread(lambda0)
     worst = max(worst, float(ext.value.max()))
     certified = worst <= need

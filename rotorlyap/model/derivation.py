@@ -82,10 +82,14 @@ __all__ = [
     "generate_source",
     "generate",
     "generate_scalar_source",
+    "generate_block_source",
     "derivation_hash",
     "GENERATED_PATH",
     "SCALAR_PATH",
     "SCALAR_FUNCTIONS",
+    "BLOCK_PATH",
+    "BLOCK_FUNCTIONS",
+    "BLOCK_LAYOUT",
     "PARAMETER_NAMES",
 ]
 
@@ -95,6 +99,20 @@ SCALAR_PATH = GENERATED_PATH.with_name("blade_scalar.py")
 #: The functions also written as scalar code (one state, ``math`` functions, results written
 #: into a given array) for the compiled kernels of :mod:`rotorlyap.model.compiled`.
 SCALAR_FUNCTIONS: tuple[str, ...] = ("rhs_terms", "rhs_dw_terms", "potential_terms")
+
+BLOCK_PATH = GENERATED_PATH.with_name("blade_block.py")
+
+#: The functions also written as block code (a block of states innermost, every quantity a
+#: row of one workspace array, so that the compiler vectorises the loop over the states) for
+#: the block kernels of :mod:`rotorlyap.model.compiled`.
+BLOCK_FUNCTIONS: tuple[str, ...] = ("rhs_terms", "rhs_dw_terms")
+
+#: Layout of the block code's workspace ``W`` (float64, rows of ``BLOCK`` states, row ``r`` of
+#: state ``i`` at ``W[r * BLOCK + i]``): (BLOCK, first input row, first row of the cosines and
+#: sines, first output row, the cosines and sines in their row order). The inputs take at most
+#: 10 rows, the cosines and sines 6, the outputs at most 49.
+BLOCK_LAYOUT: tuple = (128, 0, 10, 16, (("cos", "beta"), ("sin", "beta"), ("cos", "zeta"),
+                                         ("sin", "zeta"), ("cos", "theta"), ("sin", "theta")))
 
 #: Order of the constant parameter tuple ``P`` taken by every generated function.
 PARAMETER_NAMES: tuple[str, ...] = (
@@ -432,6 +450,50 @@ def _scalar_function_source(name: str, args, outputs, doc: str) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _block_function_source(name: str, args, outputs, doc: str) -> str:
+    """Python source of one block function with the same CSE and the same printed expressions
+    as :func:`_scalar_function_source`: ``name_block(n, P, W)`` evaluates the states
+    ``0 <= i < n`` (``n <= BLOCK``) whose inputs and cosines and sines are rows of ``W``
+    (:data:`BLOCK_LAYOUT`) and writes the outputs into rows of ``W``. Every row offset is a
+    literal, so that the compiler sees one array with constant distances between the rows (no
+    runtime alias checks) and vectorises the loop."""
+    block, in_row, trig_row, out_row, trig = BLOCK_LAYOUT
+    printer = _ScalarPrinter({"fully_qualified_modules": True, "allow_unknown_functions": False})
+    tmp = sp.numbered_symbols("_x")
+    replacements, reduced = sp.cse(outputs, symbols=tmp, optimizations="basic", order="canonical")
+    argnames = [str(a) for a in args]
+    if len(argnames) > trig_row - in_row or len(outputs) > 49:
+        raise ValueError(f"{name}: too many inputs or outputs for BLOCK_LAYOUT")
+
+    def row(r):
+        return f"W[{r * block} + _i]"
+
+    def rows(text):
+        for k, (fn, arg) in enumerate(trig):
+            text = text.replace(f"math.{fn}({arg})", row(trig_row + k))
+        if "math." in text:
+            raise ValueError(f"{name}: the block code has only the cosines and sines of BLOCK_LAYOUT")
+        return text
+
+    lines = [f"def {name}_block(n, P, W):"]
+    lines.append(f'    """``{name}`` of the states 0 <= i < n <= {block} of the workspace W (float64,')
+    lines.append(f"    row r of state i at W[r * {block} + i]): inputs {', '.join(argnames)} in rows")
+    lines.append(f"    {in_row}-{in_row + len(argnames) - 1}, "
+                 f"{', '.join(f'{fn} {arg}' for fn, arg in trig)} in rows {trig_row}-{trig_row + len(trig) - 1};")
+    lines.append(f"    writes the outputs 0-{len(outputs) - 1} into rows {out_row}-{out_row + len(outputs) - 1}.")
+    lines.append('    """')
+    for k, pname in enumerate(PARAMETER_NAMES):
+        lines.append(f"    {pname} = P[{k}]")
+    lines.append("    for _i in range(n):")
+    for j, a in enumerate(argnames):
+        lines.append(f"        {a} = {row(in_row + j)}")
+    for sym, expr in replacements:
+        lines.append(f"        {sym} = {rows(printer.doprint(expr))}")
+    for k, expr in enumerate(reduced):
+        lines.append(f"        {row(out_row + k)} = {rows(printer.doprint(expr))}")
+    return "\n".join(lines) + "\n"
+
+
 def _function_source(name: str, args, outputs, doc: str) -> str:
     """Python source of one vectorised function with CSE."""
     printer = _Printer({"fully_qualified_modules": True, "allow_unknown_functions": False})
@@ -469,7 +531,8 @@ def derivation_hash() -> str:
     parts = [sp.__version__]
     for obj in (PARAMETER_NAMES, _symbols, _components, _dcm_rows, derive, _flat,
                 generated_functions, _Printer, _function_source, _ScalarPrinter,
-                _scalar_function_source, SCALAR_FUNCTIONS):
+                _scalar_function_source, SCALAR_FUNCTIONS, _block_function_source,
+                BLOCK_FUNCTIONS, BLOCK_LAYOUT):
         parts.append(repr(obj) if isinstance(obj, tuple) else inspect.getsource(obj))
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()[:16]
 
@@ -513,9 +576,36 @@ def generate_scalar_source() -> str:
     return header + "\n" + body
 
 
+def generate_block_source() -> str:
+    """Full source text of ``rotorlyap/model/_generated/blade_block.py`` (deterministic)."""
+    funcs = generated_functions()
+    block, in_row, trig_row, out_row, trig = BLOCK_LAYOUT
+    header = (
+        '"""Generated by ``python -m rotorlyap.model.derivation``: do not edit.\n\n'
+        "Block code of the functions BLOCK_FUNCTIONS of the blade model: the expressions of\n"
+        "blade_scalar.py (the same common subexpressions, the same operations in the same\n"
+        "order) for a block of states, the loop over the states innermost and every quantity a\n"
+        "row of one workspace array W, so that numba (LLVM) vectorises the loop; compiled by\n"
+        "rotorlyap/model/compiled.py, which fills the input rows and the cosines and sines.\n\n"
+        f"sympy version: {sp.__version__}\n"
+        f"derivation hash: {derivation_hash()}\n"
+        '"""\n\n'
+        f"SYMPY_VERSION = {sp.__version__!r}\n"
+        f"DERIVATION_HASH = {derivation_hash()!r}\n"
+        f"PARAMETER_NAMES = {PARAMETER_NAMES!r}\n"
+        f"BLOCK = {block!r}\n"
+        f"IN_ROW = {in_row!r}\n"
+        f"TRIG_ROW = {trig_row!r}\n"
+        f"OUT_ROW = {out_row!r}\n"
+        f"TRIG = {trig!r}\n\n"
+    )
+    body = "\n\n".join(_block_function_source(name, *funcs[name]) for name in BLOCK_FUNCTIONS)
+    return header + "\n" + body
+
+
 def generate(path: Path | str = GENERATED_PATH) -> Path:
-    """Derive the model and write the generated module to ``path`` and its scalar companion
-    (``blade_scalar.py``) beside it.
+    """Derive the model and write the generated module to ``path`` and its scalar and block
+    companions (``blade_scalar.py``, ``blade_block.py``) beside it.
 
     Returns
     -------
@@ -529,6 +619,7 @@ def generate(path: Path | str = GENERATED_PATH) -> Path:
         init.write_text('"""Cached generated code (see rotorlyap.model.derivation)."""\n')
     path.write_text(generate_source())
     path.with_name(SCALAR_PATH.name).write_text(generate_scalar_source())
+    path.with_name(BLOCK_PATH.name).write_text(generate_block_source())
     return path
 
 

@@ -5,13 +5,13 @@ blade model, with the same common subexpressions as blade_model.py; compiled by
 rotorlyap/model/compiled.py.
 
 sympy version: 1.14.0
-derivation hash: 96a6eaa2699f7284
+derivation hash: db2c7c261ea07faf
 """
 
 import math
 
 SYMPY_VERSION = '1.14.0'
-DERIVATION_HASH = '96a6eaa2699f7284'
+DERIVATION_HASH = 'db2c7c261ea07faf'
 PARAMETER_NAMES = ('m', 'S_x', 'S_y', 'S_z', 'I_xx', 'I_yy', 'I_zz', 'I_xy', 'I_yz', 'I_xz', 'd_1', 'd_2', 'd_3', 'd_4', 'Omega', 'g', 'K_beta', 'K_zeta', 'K_theta', 'k_3')
 
 
