@@ -168,3 +168,59 @@ def test_bad_arguments_are_rejected(forward, kwargs, error, match):
         blade_stability(forward, mu, n_psi=4, **kwargs)
     with pytest.raises(TypeError, match="params must be a BladeParameters"):
         blade_stability({"radius": 7.85}, 0.0)
+
+
+def _fields(res) -> dict:
+    """Every field of a result, arrays as bytes (bit-for-bit comparison), the counts included."""
+    out = {}
+    for f in dataclasses.fields(res):
+        v = getattr(res, f.name)
+        out[f.name] = v.tobytes() if isinstance(v, np.ndarray) else v
+    return out
+
+
+@pytest.mark.parametrize("rule", ["sound", "paper"])
+def test_the_psi_free_search_is_the_full_search_bit_for_bit(rule):
+    """In hover without cyclic pitch nothing depends on the azimuth, so computing one azimuth for
+    all (``psi_free``) must change nothing: the same bound, level, start radii, largest W' and
+    evaluation counts as the full search, to the last bit."""
+    from rotorlyap.analysis.functions import quadratic_function
+    from rotorlyap.analysis.stability import psi_free_system
+
+    p = BladeParameters.table_i("neutral")
+    opts = dict(lyapunov=quadratic_function, n_psi=6, n_sphere=64, rule=rule)
+    blade = Blade(p, 0.0)
+    steady = blade.equilibrium()
+    fun = quadratic_function(blade, steady)
+    from rotorlyap.model.steady import as_steady_motion, disturbed_rhs
+    assert psi_free_system(blade, as_steady_motion(steady), disturbed_rhs(blade, steady), fun, DEFAULT_SCALES)
+    fast = blade_stability(p, 0.0, **opts)
+    full = blade_stability(p, 0.0, psi_free=False, **opts)
+    assert fast.A > 0 and fast.stable.all()
+    assert _fields(fast) == _fields(full)
+
+
+def test_psi_free_is_refused_where_the_azimuth_matters():
+    """The free stream (mu > 0) and cyclic pitch make the blade's equations depend on psi, and
+    the probe sees a W that depends on it in its last bits: no psi-free search there."""
+    from rotorlyap.analysis.functions import quadratic_function
+    from rotorlyap.analysis.stability import psi_free_system, same_at_every_azimuth
+    from rotorlyap.model.steady import as_steady_motion, disturbed_rhs
+
+    def check(params, mu):
+        blade = Blade(params, mu)
+        steady = as_steady_motion(Blade(params, 0.0).equilibrium())
+        fun = quadratic_function(blade, steady)
+        return psi_free_system(blade, steady, disturbed_rhs(blade, steady), fun, DEFAULT_SCALES)
+
+    p = BladeParameters.table_i("neutral")
+    assert check(p, 0.0)
+    assert not check(p, 0.05)
+    assert not check(dataclasses.replace(p, cyclic_cos=0.01), 0.0)
+
+    # the probe itself: a W with an azimuth ripple in its last bits is seen
+    blade = Blade(p, 0.0)
+    fun = quadratic_function(blade)
+    assert same_at_every_azimuth((fun.W, fun.dW), DEFAULT_SCALES)
+    rippled = lambda psi, x: fun.W(psi, x) * (1.0 + 1e-15 * np.cos(psi))  # noqa: E731
+    assert not same_at_every_azimuth((fun.W, rippled), DEFAULT_SCALES)

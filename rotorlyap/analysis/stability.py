@@ -25,9 +25,9 @@ from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
 from ..model.blade import Blade
 from ..model.parameters import BladeParameters
 from ..model.steady import as_steady_motion, disturbed_rhs
-from .functions import QuadraticFunction, energy_function
+from .functions import EnergyFunction, QuadraticFunction, energy_function
 
-__all__ = ["blade_stability"]
+__all__ = ["blade_stability", "psi_free_system", "same_at_every_azimuth"]
 
 
 def blade_stability(
@@ -77,7 +77,8 @@ def blade_stability(
         Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ``n_radii``,
         ``rule``, ...). The strict reading's default rule is ``"sound"`` (the theorem's (h)
         over the whole period: a numerical certificate); ``rule="paper"`` gives the paper's
-        per-azimuth step 6.
+        per-azimuth step 6. ``psi_free`` is set here where nothing depends on the azimuth
+        (:func:`psi_free_system`): the same result, computed at one azimuth for all.
 
     Returns
     -------
@@ -115,6 +116,8 @@ def blade_stability(
     if rule == "sound" and isinstance(fun, QuadraticFunction):
         # W = x^T P x: its extrema on the engine's spheres in closed form
         engine_options.setdefault("w_matrix", lambda psi: a[:, None] * fun.P(psi) * a[None, :])
+    if "psi_free" not in engine_options:
+        engine_options["psi_free"] = psi_free_system(blade, motion, f, fun, a)
     designed = getattr(fun, "design", None)
     if designed is not None and test_disturbances is None:
         for key, value in fun.engine_options().items():
@@ -125,3 +128,49 @@ def blade_stability(
         f, fun.W, DEFAULT_A if A is None else A, scales=a,
         n_psi=n_psi, dW=fun.dW, test_directions=test_disturbances, **engine_options,
     )
+
+
+def psi_free_system(blade: Blade, motion, f, fun, scales) -> bool:
+    """Whether the disturbed blade ``f`` and the function ``fun`` (its ``W`` and ``W'``) are the
+    same floats at every azimuth, so that the engine may compute one azimuth for all
+    (``psi_free`` of :func:`rotorlyap.technical_stability`).
+
+    True only for the blade in hover (``mu = 0``, no cyclic pitch) about a constant steady
+    motion, with a constant quadratic function or the blade's energy (nothing else in the
+    model depends on the azimuth there: the free stream and the cyclic pitch are its only
+    sources), and only if 64 states at 8 azimuths confirm it bit for bit.
+
+    Parameters
+    ----------
+    blade : Blade
+    motion : SteadyMotion
+    f : callable
+        The disturbed right-hand side ``f(psi, x)``.
+    fun : object
+        The function, with ``W`` and ``dW``.
+    scales : numpy.ndarray
+        Norm scales ``a_i`` (the probe's states are of their size).
+
+    Returns
+    -------
+    bool
+    """
+    if blade.mu != 0.0 or blade.has_cyclic or not motion.is_constant:
+        return False
+    if not ((isinstance(fun, QuadraticFunction) and fun.constant) or isinstance(fun, EnergyFunction)):
+        return False
+    return same_at_every_azimuth((f, fun.W, fun.dW), scales)
+
+
+def same_at_every_azimuth(functions, scales, n_states: int = 64, n_azimuths: int = 8) -> bool:
+    """Whether each of ``functions`` (``g(psi, x)``, vectorised) gives the same floats at
+    ``n_states`` pseudo-random states (of the size of ``scales``) on ``n_azimuths`` azimuths of
+    the period ``2 pi``: the probe of :func:`psi_free_system`."""
+    x = np.random.default_rng(0).normal(size=(n_states, 6)) * (0.5 * np.asarray(scales, dtype=float))
+    psi = np.repeat(2.0 * np.pi * np.arange(n_azimuths) / n_azimuths, n_states)
+    states = np.tile(x, (n_azimuths, 1))
+    for g in functions:
+        v = np.asarray(g(psi, states), dtype=float).reshape(n_azimuths, n_states, -1)
+        if not np.array_equal(v, np.broadcast_to(v[:1], v.shape)):
+            return False
+    return True

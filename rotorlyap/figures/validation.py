@@ -41,7 +41,7 @@ import numpy as np
 
 from ..analysis.floquet import blade_floquet, floquet_sweep
 from ..analysis.functions import energy_function, optimised_quadratic_function, quadratic_function
-from ..analysis.stability import blade_stability
+from ..analysis.stability import blade_stability, psi_free_system
 from ..conventions import DEFAULT_A, DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
 from ..errors import NotAsymptoticallyStableError, PeriodicMotionError
 from ..methods.lyapunov import technical_stability
@@ -51,7 +51,7 @@ from ..methods.validation import last_revolution, long_run, validate
 from ..model.blade import Blade
 from ..model.modes import derived_quantities
 from ..model.parameters import BladeParameters
-from ..model.steady import disturbed_rhs, periodic_motion, tabulate_motion
+from ..model.steady import as_steady_motion, disturbed_rhs, periodic_motion, tabulate_motion
 from ..reporting import Rounded, decade_above, format_small, format_small_array
 from .export import markdown_table
 from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HATCH_COLOR, HATCH_LINEWIDTH,
@@ -1299,12 +1299,15 @@ class CellSystem:
         True for ``W = x^T P(psi) x``.
     result : TechnicalStabilityResult
         The scan's result for the cell.
+    psi_free : bool
+        Nothing depends on the azimuth (the engine's ``psi_free``, as ``blade_stability`` set it).
     """
 
     f: object
     function: object
     quadratic: bool
     result: object
+    psi_free: bool = False
 
 
 def cell_system(scan: ScanData, motions: SteadyMotions, key: str, case: str, mu: float) -> CellSystem:
@@ -1339,8 +1342,9 @@ def cell_system(scan: ScanData, motions: SteadyMotions, key: str, case: str, mu:
         if cand.function == "quadratic-opt":
             Q = np.diag(scan.weights[scan.cases.index(case)] / DEFAULT_SCALES**2)
         fun = quadratic_function(blade, steady, Q)
-    return CellSystem(f=disturbed_rhs(blade, steady), function=fun,
-                      quadratic=cand.function != "energy", result=result)
+    f = disturbed_rhs(blade, steady)
+    return CellSystem(f=f, function=fun, quadratic=cand.function != "energy", result=result,
+                      psi_free=psi_free_system(blade, as_steady_motion(steady), f, fun, result.scales))
 
 
 @dataclass(frozen=True)
@@ -1451,7 +1455,8 @@ def rule_changes(scan: ScanData, motions: SteadyMotions, *, keys=("quadratic", "
                     continue
                 r_s, fun = cell.result, cell.function
                 r_p = technical_stability(cell.f, fun.W, r_s.A_requested, scales=r_s.scales, dW=fun.dW,
-                                          rule="paper", **{**SCAN_OPTIONS, "n_psi": r_s.psi.size})
+                                          rule="paper", psi_free=cell.psi_free,
+                                          **{**SCAN_OPTIONS, "n_psi": r_s.psi.size})
                 for r, n, A, lam in ((r_p, n_p, A_p, l_p), (r_s, n_s, A_s, l_s)):
                     n[row, j] = int(r.stable.sum())
                     A[row, j] = r.A
@@ -1477,7 +1482,7 @@ def search_check(scan: ScanData, motions: SteadyMotions, *, case: str = "forward
         a = np.asarray(r0.scales)
         w_matrix = (lambda psi: a[:, None] * fun.P(psi) * a[None, :]) if cell.quadratic else None
         finer = [technical_stability(cell.f, fun.W, r0.A_requested, scales=a, dW=fun.dW, w_matrix=w_matrix,
-                                     **{**SCAN_OPTIONS, "n_psi": r0.psi.size, **opts})
+                                     psi_free=cell.psi_free, **{**SCAN_OPTIONS, "n_psi": r0.psi.size, **opts})
                  for opts in runs]
         for col, r in enumerate([r0] + finer):
             A[k, col] = r.A

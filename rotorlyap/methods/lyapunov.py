@@ -36,7 +36,8 @@ import numpy as np
 from ._checks import positive_float as _positive_float
 from ._checks import positive_int as _positive_int
 from .polish import T_MIN, polish
-from .sampling import Extremum, sphere_extremum, unit_sphere_points
+from .sampling import Extremum, PsiFree, sphere_extremum, unit_sphere_points
+from .sampling import psi_free as _is_psi_free
 
 __all__ = ["RULES", "TechnicalStabilityResult", "band_max_dw", "technical_stability",
            "orbital_derivative"]
@@ -260,6 +261,7 @@ def technical_stability(
     margin: float = 1e-6,
     autonomous: bool = False,
     band: str = "level",
+    psi_free: bool = False,
 ) -> TechnicalStabilityResult:
     """Certify bounded motion of ``x' = f(psi, x)`` with the Liapunov function ``W``.
 
@@ -339,6 +341,14 @@ def technical_stability(
         azimuth). The searches then keep the azimuth at 0 instead of moving it over the period,
         and every azimuth of the grid gets the same start radius: the same theorem, searched
         in one azimuth instead of ``n_psi``. The caller vouches that nothing depends on ``psi``.
+    psi_free : bool
+        ``f``, ``W`` and ``W'`` do not depend on ``psi``, to the last bit (the blade in hover
+        without cyclic pitch about its equilibrium, a constant ``W``). Unlike ``autonomous``
+        the search is not changed: every azimuth is searched as without it, but the values
+        of one azimuth stand for all and each distinct start is refined once
+        (:class:`rotorlyap.methods.sampling.PsiFree`), so the result is the same, bit for bit,
+        including the evaluation counts. The caller vouches for the independence
+        (:func:`rotorlyap.analysis.stability.blade_stability` checks it).
     band : {"level", "shell"}
         Only with ``rule="sound"``: where (h) is searched. ``"level"``: the band ``||x|| <= A,
         W >= c`` itself, ray by ray from the level set (closed form for a quadratic ``W``, a
@@ -429,6 +439,8 @@ def technical_stability(
                          "(test_directions) is the paper's rule only")
 
     sys = _Checked(f, W, dW, n, fd_step * period / (2 * np.pi))
+    if psi_free:  # one azimuth's values stand for all (the same answer, less work)
+        sys.dw, sys.w = PsiFree(sys.dw, sys), PsiFree(sys.w, sys)
     if test_directions is None:
         reading = "strict"
         dirs = unit_sphere_points(n, n_sphere, seed)
@@ -453,11 +465,11 @@ def technical_stability(
     if rule == "sound":
         return _sound(sys, w_matrix, A, psi, period, scales, dirs, common, n_radii=n_radii,
                       n_shells=n_shells, n_bisect=n_bisect, rtol=rtol, margin=margin,
-                      autonomous=bool(autonomous), shell=band == "shell")
+                      autonomous=bool(autonomous), shell=band == "shell", psi_free=bool(psi_free))
 
     # round-off allowance from the size of W on the requested sphere
     w_scale = sphere_extremum(
-        lambda p, x: np.abs(sys.w(p, x)), psi, A, scales, dirs, per_psi=False,
+        _like(sys.w, lambda p, x: np.abs(sys.w(p, x))), psi, A, scales, dirs, per_psi=False,
         period=period, n_refine=1, n_iter=0,
     ).value[0]
     tol = rtol * w_scale
@@ -699,7 +711,8 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
                 n_sphere: int = 1024, n_levels: int = 5, n_refine: int = 4, n_iter: int = 40,
                 seed: int = 0, stop_above: float | None = None, fd_step: float = 1e-4,
                 directions=None, n_polish: int = 256, n_sweep: int = 1024, starts: str = "levels",
-                n_lbfgs: int = 64, autonomous: bool = False, inner: float | None = None):
+                n_lbfgs: int = 64, autonomous: bool = False, inner: float | None = None,
+                psi_free: bool = False):
     """Largest ``W'`` on the band ``||x|| <= A, W(psi, x) >= c`` (condition (h) of the theorem).
 
     The band is searched ray by ray: along each direction ``u`` (scaled coordinates) at each
@@ -764,6 +777,10 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         Search the shell ``inner <= ||x|| <= A`` instead of the band: a superset of the band
         when the ball of radius ``inner`` lies in ``{W < c}`` at every azimuth (no level to find
         along each ray, so many times cheaper for a ``W`` without closed forms).
+    psi_free : bool
+        ``f``, ``W`` and ``W'`` do not depend on ``psi`` to the last bit: the same search and
+        the same answer, with the work of every azimuth but one skipped
+        (:class:`rotorlyap.methods.sampling.PsiFree`).
 
     Returns
     -------
@@ -785,6 +802,8 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
 
     k = psi.size
     g = lambda p, y: sys.dw(p, state(p, y))  # noqa: E731
+    if psi_free:
+        g = PsiFree(g, sys)
     if per_psi:
         ext = sphere_extremum(g, psi, None, np.ones(n), dirs, per_psi=True, free_psi=False,
                               period=period, shell=(np.full(k, T_MIN), np.ones(k)),
@@ -837,9 +856,15 @@ def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_
     new_v, new_p = np.full(value.size, -np.inf), np.zeros(value.size)
     top = np.argsort(-value)[:n_candidates]
     block = max(1, 262_144 // n_sweep)
+    same = _is_psi_free(fun)  # then every azimuth of the sweep gives the first's value
     for s in range(0, top.size, block):
         idx = top[s:s + block]
-        v = np.asarray(fun(np.tile(grid, idx.size), np.repeat(y[idx], n_sweep, axis=0)), dtype=float)
+        if same:
+            v = np.repeat(np.asarray(fun(np.full(idx.size, grid[0]), y[idx]), dtype=float)[:, None],
+                          n_sweep, axis=1)
+            fun.skip(idx.size * (n_sweep - 1))
+        else:
+            v = np.asarray(fun(np.tile(grid, idx.size), np.repeat(y[idx], n_sweep, axis=0)), dtype=float)
         v = v.reshape(idx.size, n_sweep)
         j = np.argmax(v, axis=1)
         new_v[idx], new_p[idx] = v[np.arange(idx.size), j], grid[j]
@@ -852,8 +877,14 @@ def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_
     return value, psi, y
 
 
+def _like(model, fun):
+    """``fun`` made :class:`~rotorlyap.methods.sampling.PsiFree` (crediting the same counters)
+    where ``model`` is."""
+    return PsiFree(fun, model.counter) if _is_psi_free(model) else fun
+
+
 def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_shells, n_bisect,
-           rtol, margin, autonomous=False, shell=False) -> TechnicalStabilityResult:
+           rtol, margin, autonomous=False, shell=False, psi_free=False) -> TechnicalStabilityResult:
     """:func:`technical_stability` with ``rule="sound"``."""
     n_psi = psi.size
     n = scales.size
@@ -884,7 +915,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         # the best 32 refined minima polished (the direction and the azimuth free)
         ext = sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False, free_psi=free,
                               keep=32, **w_common)
-        on_sphere = lambda p, y: -sys.w(p, (r * y / np.linalg.norm(y, axis=1, keepdims=True)) * scales)  # noqa: E731
+        on_sphere = _like(sys.w, lambda p, y: -sys.w(p, (r * y / np.linalg.norm(y, axis=1, keepdims=True)) * scales))
         start = Extremum(-ext.value, ext.psi, ext.x / scales / r)
         value, _, _ = polish(on_sphere, start, free_psi=free)
         # the level 0.1 % below the smallest W found: a search that misses the true minimum of a
@@ -894,7 +925,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
     def w_size(r: float) -> float:
         if w_matrix is not None:
             return r * r * unit_size
-        return float(sphere_extremum(lambda p, x: np.abs(sys.w(p, x)), psi, r, scales, dirs,
+        return float(sphere_extremum(_like(sys.w, lambda p, x: np.abs(sys.w(p, x))), psi, r, scales, dirs,
                                      per_psi=False, n_refine=1, n_iter=0, period=period).value[0])
 
     inner_radii = {}  # shell: (r, alpha) -> the largest ball in {W < alpha} over the period
@@ -915,7 +946,8 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
                            inner=inner_of(r, alpha),
                            directions=dirs if directions is None else directions,
                            n_levels=n_shells, stop_above=stop, n_refine=common["n_refine"],
-                           n_iter=common["n_iter"], starts=starts, n_lbfgs=n_lbfgs)
+                           n_iter=common["n_iter"], starts=starts, n_lbfgs=n_lbfgs,
+                           psi_free=psi_free)
 
     # a second set of directions for the final check: another scrambling, as many points
     dirs_2 = unit_sphere_points(n, max(dirs.shape[0] - 2 * n * n, 16), 1)

@@ -27,6 +27,8 @@ from typing import Callable
 
 import numpy as np
 
+from .sampling import psi_free
+
 __all__ = ["T_MIN", "ascend", "polish", "polish_scipy"]
 
 T_MIN = 1e-9
@@ -228,6 +230,13 @@ def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_p
     valid = np.flatnonzero(_valid_starts(start))
     if valid.size == 0:
         return values, psis, ys
+    copies = None
+    if psi_free(fun):  # each distinct start once: its copies at other azimuths move alike
+        _, first, copies = np.unique(np.column_stack([values[valid], ys[valid]]), axis=0,
+                                     return_index=True, return_inverse=True)
+        copies = copies.reshape(-1)
+        extra = np.bincount(copies) - 1
+        everyone, valid = valid, valid[first]
     n = ys.shape[1]
     t0 = np.linalg.norm(ys[valid], axis=1)
     u0 = ys[valid] / t0[:, None]
@@ -236,8 +245,18 @@ def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_p
     lower = np.full(z0.shape, -np.inf)
     upper = np.full(z0.shape, np.inf)
     lower[:, n], upper[:, n] = T_MIN, 1.0
-    F, z = ascend(lambda Z, rows: fun(*unpack(Z, rows)), z0, lower, upper, maxiter=maxiter)
+
+    def evaluate(Z, rows):
+        out = fun(*unpack(Z, rows))
+        if copies is not None:
+            fun.skip(int(extra[rows].sum()))
+        return out
+
+    F, z = ascend(evaluate, z0, lower, upper, maxiter=maxiter)
     p_best, y_best = unpack(z, np.arange(valid.size))
+    if copies is not None:  # back to every start (the azimuth of each its own: it did not move)
+        F, y_best, valid = F[copies], y_best[copies], everyone
+        p_best = psis[valid]
     better = np.isfinite(F) & (F > values[valid])
     sel = valid[better]
     values[sel], psis[sel], ys[sel] = F[better], p_best[better], y_best[better]

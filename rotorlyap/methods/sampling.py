@@ -28,7 +28,7 @@ from scipy.stats import qmc
 
 Function = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
-__all__ = ["unit_sphere_points", "Extremum", "sphere_extremum", "refine_extremum"]
+__all__ = ["unit_sphere_points", "Extremum", "PsiFree", "psi_free", "sphere_extremum", "refine_extremum"]
 
 
 @lru_cache(maxsize=64)
@@ -99,6 +99,58 @@ class Extremum:
     x: np.ndarray
 
 
+class PsiFree:
+    """A search function whose values do not depend on the azimuth, to the last bit (a blade in
+    hover without cyclic pitch, about a constant steady motion, with a constant ``W``).
+
+    The searches of this module (and :func:`rotorlyap.methods.polish.polish`) recognise it: they
+    evaluate one azimuth for all, refine each distinct start once, and give the result they
+    give without it, bit for bit. ``skip(n)`` is told how many states were not evaluated because
+    their values were known; it credits the counters of ``counter`` (any object with integer
+    attributes ``count`` and ``count_dw``) with what evaluating them would have added, at the
+    rate the calls made so far added (so that evaluation counts, and the budgets drawn from
+    them, stay those of the full search).
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(psi, x)``, vectorised.
+    counter : object, optional
+        The counters to credit.
+    """
+
+    psi_free = True
+
+    def __init__(self, fun: Function, counter=None):
+        self.fun, self.counter = fun, counter
+        self.states = 0
+        self.added = np.zeros(2)  # what the calls made so far added to count and count_dw
+
+    def __call__(self, psi: np.ndarray, x: np.ndarray) -> np.ndarray:
+        before = self._counts()
+        out = self.fun(psi, x)
+        self.states += len(x)
+        self.added += self._counts() - before
+        return out
+
+    def _counts(self) -> np.ndarray:
+        c = self.counter
+        return np.zeros(2) if c is None else np.array([c.count, c.count_dw], dtype=float)
+
+    def skip(self, n: int) -> None:
+        """Credit ``n`` states whose values were known without evaluating them."""
+        if self.counter is None or n <= 0 or self.states == 0:
+            return
+        add = np.rint(self.added * (n / self.states)).astype(int)
+        self.counter.count += int(add[0])
+        self.counter.count_dw += int(add[1])
+
+
+def psi_free(fun) -> bool:
+    """Whether ``fun`` is a :class:`PsiFree` function."""
+    return bool(getattr(fun, "psi_free", False))
+
+
 def _normalise(u: np.ndarray) -> np.ndarray:
     return u / np.linalg.norm(u, axis=-1, keepdims=True)
 
@@ -118,6 +170,7 @@ def refine_extremum(
     h: float = 1e-6,
     initial_step: float = 0.2,
     min_step: float = 1e-7,
+    multiplicity: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Batched local ascent of ``sign * fun(psi, rho * scales * u)`` over unit ``u``.
 
@@ -153,6 +206,9 @@ def refine_extremum(
     initial_step, min_step : float
         Initial and smallest step (radians on the sphere; fractions of the period/shell
         width for psi and rho). A candidate whose step falls below ``min_step`` stops.
+    multiplicity : numpy.ndarray, optional
+        With a :class:`PsiFree` ``fun``: how many identical starts (at other azimuths) each
+        candidate stands for; their evaluations are credited to ``fun.skip``.
 
     Returns
     -------
@@ -172,8 +228,14 @@ def refine_extremum(
         free_rho_mask = width > 0
     psi_scale = period / (2 * np.pi)
 
-    def evaluate(p, r, uu):
-        return sign * np.asarray(fun(p, (r[:, None] * uu) * scales), dtype=float)
+    extra = None if multiplicity is None else np.asarray(multiplicity) - 1  # the copies skipped
+
+    def evaluate(p, r, uu, cand=None):
+        out = sign * np.asarray(fun(p, (r[:, None] * uu) * scales), dtype=float)
+        if extra is not None:  # cand: the candidates evaluated, each p.size // cand.size times
+            idx = np.arange(m) if cand is None else cand
+            fun.skip(int(extra[idx].sum()) * (p.size // idx.size))
+        return out
 
     val = evaluate(psi, rho, u)
     step = np.full(m, float(initial_step))
@@ -199,7 +261,7 @@ def refine_extremum(
                 up.append(ua)
                 pp.append(pa)
                 rp.append(np.where(free_rho_mask[act], ra + s * h * width[act], ra))
-        vals = evaluate(np.concatenate(pp), np.concatenate(rp), np.concatenate(up))
+        vals = evaluate(np.concatenate(pp), np.concatenate(rp), np.concatenate(up), act)
         vals = vals.reshape(2 * n_var, k)
         grad = (vals[0::2] - vals[1::2]) / (2 * h)  # (n_var, k)
         g_u = grad[:n].T
@@ -220,7 +282,7 @@ def refine_extremum(
             r_t = np.clip(ra + s * d[:, -1] * width[act], lo[act], hi[act])
         else:
             r_t = ra
-        v_t = evaluate(p_t, r_t, u_t)
+        v_t = evaluate(p_t, r_t, u_t, act)
         better = (v_t > val[act]) & ~flat
         idx = act[better]
         u[idx], psi[idx], val[idx] = u_t[better], p_t[better] if free_psi else psi[idx], v_t[better]
@@ -292,6 +354,9 @@ def sphere_extremum(
         Only with ``per_psi=False``: return the best ``keep`` refined candidates, best first
         (starts for a further local search), instead of the best one.
 
+    A :class:`PsiFree` ``fun`` is sampled at the first azimuth only (where the radii are the same
+    at every azimuth) and each distinct start refined once: the same answer.
+
     Returns
     -------
     Extremum
@@ -315,14 +380,20 @@ def sphere_extremum(
     # sample: shape (k, n_lev, nd); evaluated azimuth by azimuth in blocks to bound memory
     samples = np.empty((k, n_lev, nd))
     block = max(1, 200_000 // max(nd * n_lev, 1))
-    for start in range(0, k, block):
+    same = psi_free(fun) and k > 1 and bool(np.all(levels == levels[:1]))
+    for start in range(0, 1 if same else k, block):
         sl = slice(start, min(start + block, k))
         kb = sl.stop - sl.start
         p = np.repeat(psi[sl], n_lev * nd)
         r = np.repeat(levels[sl].reshape(-1), nd)
         x = (r[:, None] * np.tile(directions, (kb * n_lev, 1))) * scales
+        if same:  # every azimuth's samples are the first's
+            sl, kb = slice(0, 1), 1
+            p, x = p[:n_lev * nd], x[:n_lev * nd]
         vals = sign * np.asarray(fun(p, x), dtype=float).reshape(kb, n_lev, nd)
-        samples[sl] = vals
+        if same:
+            fun.skip((k - 1) * n_lev * nd)
+        samples[slice(0, k) if same else sl] = vals
         if stop_above is not None and sign > 0 and not per_psi and vals.max() > stop_above:
             flat = int(np.argmax(vals))
             ib, il, idir = np.unravel_index(flat, vals.shape)
@@ -342,7 +413,18 @@ def sphere_extremum(
     il, idir = np.divmod(cols, nd)
     p0, r0, u0 = psi[rows], levels[rows, il], directions[idir]
     bounds = (lo[rows], hi[rows]) if shell is not None else None
-    if n_iter > 0:
+    if n_iter > 0 and psi_free(fun):  # each distinct start refined once (its azimuth stays put)
+        key = np.column_stack([r0, idir] + (list(bounds) if bounds is not None else []))
+        _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
+        inverse = inverse.reshape(-1)
+        val, _, r1, u1 = refine_extremum(
+            fun, p0[first], r0[first], u0[first], scales, sign=sign, free_psi=free_psi,
+            period=period, rho_bounds=None if bounds is None else (bounds[0][first], bounds[1][first]),
+            n_iter=n_iter, multiplicity=np.bincount(inverse),
+        )
+        val, r1, u1 = sign * val[inverse], r1[inverse], u1[inverse]
+        p1 = np.mod(p0, period) if free_psi else p0
+    elif n_iter > 0:
         val, p1, r1, u1 = refine_extremum(
             fun, p0, r0, u0, scales, sign=sign, free_psi=free_psi, period=period,
             rho_bounds=bounds, n_iter=n_iter,
