@@ -161,11 +161,14 @@ def kernels(batches) -> dict:
     x = rng.normal(scale=0.02, size=(n_max, 6))
     psi = rng.uniform(0.0, 2.0 * np.pi, n_max)
     rates = {}
-    for mode in ("numpy", "compiled", "compiled, all cores"):
+    for mode in ("numpy", "compiled, one state", "compiled", "compiled, all cores"):
         _with_mode(mode.split(",")[0])
         _set_threads(None if "all" in mode else 1)
         hover = Blade(params, 0.0)
         forward = Blade(params, 0.15)
+        if "one state" in mode:  # the kernels before issue 27: one state at a time
+            for blade in (hover, forward):
+                blade.kernel.block = False
         xi = hover.equilibrium()
         energy = energy_function(hover, xi)
         quad = quadratic_function(forward, motion)
@@ -301,17 +304,20 @@ def main(argv=None) -> int:
 
     print(f"(numpy and compiled: one thread; all cores: {os.cpu_count()} here, for batches of "
           f">= {PARALLEL_MIN_STATES} states)")
-    head = (f"{'kernel':36s} {'batch':>8s} {'numpy':>11s} {'compiled':>11s} {'speed-up':>8s} "
-            f"{'all cores':>11s}")
+    head = (f"{'kernel':36s} {'batch':>8s} {'numpy':>11s} {'one state':>11s} {'block':>11s} "
+            f"{'vs numpy':>8s} {'vs one':>7s} {'all cores':>11s}")
+    print("compiled: 'one state', the kernels before issue 27 (one state at a time); 'block', today's"
+          " (128 states in SIMD lanes)")
     print(head)
     names = sorted({k[0] for k in rates}, key=lambda s: ("rhs" not in s, "energy" not in s))
     for name in names:
         for n in batches:
-            a, b = rates[(name, "numpy", n)], rates[(name, "compiled", n)]
+            a, o, b = (rates[(name, m, n)] for m in ("numpy", "compiled, one state", "compiled"))
             c = rates[(name, "compiled, all cores", n)]
-            print(f"{name:36s} {n:8d} {a:11,.0f} {b:11,.0f} {b / a:7.1f}x {c:11,.0f}")
+            print(f"{name:36s} {n:8d} {a:11,.0f} {o:11,.0f} {b:11,.0f} {b / a:7.1f}x {b / o:6.1f}x {c:11,.0f}")
     print("targets: W' of the energy and quadratic functions >= 5,000,000 states/s at batches >= 4096; "
-          "rhs on 32 states >= 20x faster per call")
+          "rhs on 32 states >= 20x faster per call; the physical limit of the kernel: some tens of "
+          "millions of states per second per core (issue 27)")
 
     counts = operation_counts(BladeParameters.table_i("forward").n_stations)
     ghz = clock_ghz()

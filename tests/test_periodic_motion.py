@@ -62,3 +62,20 @@ def test_start_option_seeds_newton_and_bad_starts_are_refused():
         periodic_motion(p, 0.1, start=lambda psi: np.zeros((psi.size, 3)))
     with pytest.raises(TypeError, match="start must be None or a callable"):
         periodic_motion(p, 0.1, start=xh)
+
+
+def test_shooting_stops_at_its_noise_floor_and_refuses_a_motion_it_cannot_reach(forward):
+    """The return map's mismatch cannot fall below the integration's own error (near 1e-11 at
+    rtol 1e-12): asked for 1e-16, shooting stops where Newton no longer halves the mismatch and
+    keeps its best start, whose motion returns to itself to the floor; asked to reach the floor
+    itself below 1e-20, it refuses with the mismatch reached."""
+    from rotorlyap.model.steady import refine_motion
+
+    blade = Blade(forward, 0.15)
+    m = periodic_motion(forward, 0.15, n_points=32)
+    tab = refine_motion(blade, m, n=64, tol=1e-16)
+    sol = solve_ivp(lambda p, z: blade.rhs(p, z), (0, 2 * np.pi), tab.values[0], method="DOP853",
+                    rtol=1e-12, atol=1e-14)
+    assert np.max(np.abs(sol.y[:, -1] - tab.values[0])) < 1e-9
+    with pytest.raises(PeriodicMotionError, match=r"\|z\(2 pi\) - z\(0\)\| = "):
+        refine_motion(blade, m, n=64, tol=1e-16, floor_tol=1e-20)
