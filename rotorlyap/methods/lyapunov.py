@@ -346,8 +346,9 @@ def technical_stability(
         without cyclic pitch about its equilibrium, a constant ``W``). Unlike ``autonomous``
         the search is not changed: every azimuth is searched as without it, but the values
         of one azimuth stand for all and each distinct start is refined once
-        (:class:`rotorlyap.methods.sampling.PsiFree`), so the result is the same, bit for bit,
-        including the evaluation counts. The caller vouches for the independence
+        (:class:`rotorlyap.methods.sampling.PsiFree`), so the result is the same, bit for bit;
+        the skipped states are credited to the evaluation counts at the rate of those evaluated
+        (exact where every state costs the same). The caller vouches for the independence
         (:func:`rotorlyap.analysis.stability.blade_stability` checks it).
     band : {"level", "shell"}
         Only with ``rule="sound"``: where (h) is searched. ``"level"``: the band ``||x|| <= A,

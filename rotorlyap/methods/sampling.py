@@ -315,6 +315,9 @@ def sphere_extremum(
 ) -> Extremum:
     """Sup or inf of ``fun`` over scaled spheres (or shells), sampled then refined.
 
+    A :class:`PsiFree` ``fun`` is sampled at the first azimuth only (where the radii are the same
+    at every azimuth) and each distinct start refined once: the same answer.
+
     Parameters
     ----------
     fun : callable
@@ -353,9 +356,6 @@ def sphere_extremum(
     keep : int
         Only with ``per_psi=False``: return the best ``keep`` refined candidates, best first
         (starts for a further local search), instead of the best one.
-
-    A :class:`PsiFree` ``fun`` is sampled at the first azimuth only (where the radii are the same
-    at every azimuth) and each distinct start refined once: the same answer.
 
     Returns
     -------
