@@ -7,11 +7,14 @@ explains the design.
    cell ran, none raised) is stored, with its fresh outputs, in the book build's notebook
    cache, so that ``jupyter-book build`` renders it without executing it again. Under
    pytest-xdist each worker hands its notebooks to the controller, which stores them.
-3. **One BLAS thread per worker**: with several xdist workers, each worker and the notebook
-   kernels it starts use one OpenBLAS/OpenMP thread (unless the environment already says how
-   many): the workers already fill the cores, and BLAS threads waiting for a busy core cost
-   more than they save. The numbers do not depend on it (a committed output prints only the
-   digits that survive another BLAS, "What a committed output may print" in the README).
+3. **One BLAS and kernel thread per worker**: with several xdist workers, each worker and the
+   notebook kernels it starts use one OpenBLAS/OpenMP thread and one thread for the compiled
+   kernels (``NUMBA_NUM_THREADS``; unless the environment already says how many): the workers
+   already fill the cores, and threads waiting for a busy core cost more than they save
+   (measured: two processes side by side, each a forward-flight scan cell, 31 s each with two
+   kernel threads, 25 s with one). The numbers do not depend on it (a compiled kernel computes
+   each state alone, :mod:`rotorlyap.jit`; a committed output prints only the digits that
+   survive another BLAS, "What a committed output may print" in the README).
 """
 
 from __future__ import annotations
@@ -28,11 +31,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parent / "book" / "_ext"))
 import notebook_execution  # noqa: E402
 
 _WORKER_KEY = "rotorlyap_executed_notebooks"
-_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
 
 
 def pytest_configure(config):
-    """Point 3: one BLAS thread per xdist worker (set before the workers start)."""
+    """Point 3: one BLAS and kernel thread per xdist worker (set before the workers start)."""
     workers = getattr(config.option, "numprocesses", None)
     if workers not in (None, 0, "0") and not hasattr(config, "workerinput"):
         for name in _THREAD_VARIABLES:

@@ -72,7 +72,7 @@ from scipy.optimize import minimize
 from ..conventions import DEFAULT_SCALES, TWO_PI
 from ..errors import NotAsymptoticallyStableError
 from ..methods.floquet import floquet_multipliers
-from ..methods.periodic_lyapunov import PeriodicLyapunovSolution, periodic_lyapunov
+from ..methods.periodic_lyapunov import PeriodicLyapunovSolution, bilinear_form, periodic_lyapunov
 from ..methods.sampling import unit_sphere_points
 from ..model import compiled
 from ..model.blade import Blade
@@ -541,7 +541,7 @@ class QuadraticFunction:
         y = np.atleast_2d(np.asarray(x, dtype=float)) / self.scales
         psi = np.broadcast_to(np.asarray(psi, dtype=float), y.shape[:1])
         if self.constant:
-            return np.einsum("mi,ij,mj->m", y, self.solution.P_grid[0], y)
+            return bilinear_form(y, self.solution.P_grid[0], y)
         return self.solution.W(psi, y)
 
     def dW(self, psi, x) -> np.ndarray:
@@ -551,7 +551,7 @@ class QuadraticFunction:
         y = x / self.scales
         fy = self.f(psi, x) / self.scales
         if self.constant:
-            return 2.0 * np.einsum("mi,ij,mj->m", y, self.solution.P_grid[0], fy)
+            return 2.0 * bilinear_form(y, self.solution.P_grid[0], fy)
         return self.solution.dW(psi, y, fy)
 
     def dW_linear(self, psi, x) -> np.ndarray:

@@ -905,8 +905,14 @@ def _forensic_params(case: str, choice: dict) -> BladeParameters:
     return replace(BladeParameters.table_i(case, **over), cg_position=cg)
 
 
-def _forensic_row(choice: dict, cases, mu_values, n_psi: int) -> tuple:
-    """Per case: hover stable, first mu, first side, last side, matches."""
+def _forensic_row(choice: dict, cases, mu_values, n_psi: int, memo: dict | None = None) -> tuple:
+    """Per case: hover stable, first mu, first side, last side, matches.
+
+    ``memo`` keeps the trims and verdicts of earlier rows by their inputs (the blade's
+    parameters, the advance ratio, the trim's target, the function and the reading): many
+    combinations share them (every condition has the same hover, both functions the same trims).
+    """
+    memo = {} if memo is None else memo
     out = []
     for case in cases:
         p = _forensic_params(case, choice)
@@ -921,12 +927,29 @@ def _forensic_row(choice: dict, cases, mu_values, n_psi: int) -> tuple:
                 if mu == 0.0 or cond.startswith("paper"):
                     # the collective is left to the hover trim, whose equilibrium is kept
                     # (a new one at the trimmed collective may lie on another branch)
-                    params, steady = p, None
+                    params, steady, trim_key = p, None, None
                 else:
                     target = {"hover": "none", "cyclic": "flapping", "trimmed": "propulsive"}[cond.split()[0]]
-                    tr = forward_flight_trim(p, mu, target)
-                    params, steady = tr.params, tabulate_motion(tr.motion, 1024)
-                r = blade_stability(params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi, test_disturbances=tests)
+                    trim_key = ("trim", p, mu, target)
+                    if trim_key not in memo:
+                        try:
+                            tr = forward_flight_trim(p, mu, target)
+                            memo[trim_key] = (tr.params, tabulate_motion(tr.motion, 1024))
+                        except TrimError as exc:
+                            memo[trim_key] = exc
+                    if isinstance(memo[trim_key], TrimError):
+                        raise memo[trim_key]
+                    params, steady = memo[trim_key]
+                key = ("verdict", params, mu, trim_key, choice["function"], choice["reading"], n_psi)
+                if key not in memo:
+                    try:
+                        memo[key] = blade_stability(params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi,
+                                                    test_disturbances=tests)
+                    except NotAsymptoticallyStableError as exc:
+                        memo[key] = exc
+                if isinstance(memo[key], NotAsymptoticallyStableError):
+                    raise memo[key]
+                r = memo[key]
             except TrimError:
                 bad_rows.append(None)
                 continue
@@ -985,8 +1008,9 @@ def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: 
     if mu_values[0] != 0.0:
         raise ValueError("mu_values must start with 0 (hover)")
     rows, hover, first_mu, first_side, last_side, match = [], [], [], [], [], []
+    memo: dict = {}
     for choice in combinations:
-        res = _forensic_row(choice, cases, mu_values, n_psi)
+        res = _forensic_row(choice, cases, mu_values, n_psi, memo)
         rows.append(tuple(choice[n] for n in names))
         hover.append([r[0] for r in res])
         first_mu.append([r[1] for r in res])

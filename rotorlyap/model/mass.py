@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .parameters import BladeParameters
+from .parameters import BladeParameters, gauss_legendre
 
 __all__ = ["MassProperties", "mass_properties", "pretwist"]
 
@@ -74,7 +74,7 @@ def mass_properties(params: BladeParameters, n_points: int = 64) -> MassProperti
     -------
     MassProperties
     """
-    x, w = np.polynomial.legendre.leggauss(n_points)
+    x, w = gauss_legendre(n_points)
     a, b = params.root_cutout, params.radius
     r = 0.5 * (b - a) * x + 0.5 * (b + a)
     dr = 0.5 * (b - a) * w

@@ -27,6 +27,7 @@ and friends to evaluate them.
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from dataclasses import dataclass, field, fields
@@ -39,6 +40,19 @@ from numpy.typing import ArrayLike, NDArray
 from ..errors import TemplateValuesWarning
 from .parameter_files import read_file, write_file
 from .airfoil import NACA23012, Airfoil, LinearAirfoil
+
+
+@functools.lru_cache(maxsize=16)
+def gauss_legendre(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Nodes and weights of the ``n``-point Gauss-Legendre rule on ``[-1, 1]``
+    (:func:`numpy.polynomial.legendre.leggauss`), computed once per ``n`` and kept read-only:
+    every blade, trim iteration and mass integral asks for the same few rules, and numpy's
+    eigenvalue computation of them cost more than the integrals."""
+    x, w = np.polynomial.legendre.leggauss(int(n))
+    x.setflags(write=False)
+    w.setflags(write=False)
+    return x, w
+
 
 __all__ = [
     "BladeParameters",
@@ -686,7 +700,7 @@ class BladeParameters:
             Weights for integrals in r/R: ``sum(w f(r)) ~ int_{(R-R1)/R}^1 f dx``
             (multiply by R for integrals in metres).
         """
-        x, w = np.polynomial.legendre.leggauss(self.n_stations)
+        x, w = gauss_legendre(self.n_stations)
         a, b = self.root_r_over_R, 1.0
         return 0.5 * (b - a) * x + 0.5 * (b + a), 0.5 * (b - a) * w
 
@@ -710,7 +724,7 @@ class BladeParameters:
     # ------------------------------------------------------------------ derived quantities
     def _span_integral(self, f: Callable[[NDArray[np.float64]], NDArray[np.float64]], n: int = 64) -> float:
         """int_{R-R1}^{R} f(r/R) dr in metres-units, by n-point Gauss-Legendre."""
-        x, w = np.polynomial.legendre.leggauss(n)
+        x, w = gauss_legendre(n)
         a, b = self.root_r_over_R, 1.0
         xr = 0.5 * (b - a) * x + 0.5 * (b + a)
         return float(np.sum(0.5 * (b - a) * w * f(xr)) * self.radius)
