@@ -89,6 +89,26 @@ def test_periodic_P_solves_the_lyapunov_equation(forward_flight):
                                atol=1e-6 * np.abs(q.P(psi)).max())
 
 
+def test_the_fused_rate_is_the_rate_of_the_separate_kernels_to_the_last_bit(forward_flight):
+    """About a tabulated periodic motion W' runs in one compiled call
+    (rotorlyap.analysis.fused): the same numbers, bit for bit, as the motion's, the blade's and
+    the Hermite form's kernels called one after the other, for one state, a block and more,
+    azimuths outside [0, 2 pi) included."""
+    import copy
+
+    _, _, _, q = forward_flight
+    separate = copy.copy(q)
+    object.__setattr__(separate, "_fused_args", None)  # the path of the separate kernels
+    assert q._fused() is not None and separate._fused() is None
+    rng = np.random.default_rng(3)
+    for m in (1, 7, 300):
+        psi = rng.uniform(-5.0, 15.0, m)
+        x = 0.05 * rng.normal(size=(m, 6))
+        assert np.array_equal(q.dW(psi, x), separate.dW(psi, x)), m
+    with pytest.raises(ValueError, match="psi must be finite"):
+        q.dW(np.array([np.nan]), np.zeros((1, 6)))
+
+
 @pytest.mark.slow
 def test_certificate_about_the_periodic_motion_in_forward_flight(forward_flight):
     """The engine certifies the forward-flight blade about its periodic motion (strict)."""

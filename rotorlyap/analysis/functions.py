@@ -71,14 +71,16 @@ from scipy.optimize import minimize
 
 from ..conventions import DEFAULT_SCALES, TWO_PI
 from ..errors import NotAsymptoticallyStableError
+from ..jit import PARALLEL_MIN_STATES, threads, use_compiled
 from ..methods.floquet import floquet_multipliers
 from ..methods.periodic_lyapunov import PeriodicLyapunovSolution, bilinear_form, periodic_lyapunov
 from ..methods.sampling import unit_sphere_points
 from ..model import compiled
 from ..model.blade import Blade
 from ..model.equations import flatten_states, sym3_matvec
-from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
+from ..model.steady import SteadyMotion, TabulatedMotion, as_steady_motion, disturbed_rhs
 from ..reporting import format_small
+from .fused import fused_arguments, quadratic_rate_about_tabulated
 
 __all__ = [
     "DEFAULT_N_STEPS",
@@ -548,11 +550,34 @@ class QuadraticFunction:
         """``W' = x^T P' x + 2 x^T P f(psi, x)`` with the full nonlinear ``f``, shape ``(m,)``."""
         x = np.atleast_2d(np.asarray(x, dtype=float))
         psi = np.broadcast_to(np.asarray(psi, dtype=float), x.shape[:1])
+        fused = self._fused() if x.shape[0] < PARALLEL_MIN_STATES or threads() < 2 else None
+        if fused is not None:  # the same numbers in one compiled call (rotorlyap.analysis.fused)
+            if not np.all(np.isfinite(psi)):
+                raise ValueError("psi must be finite")
+            return quadratic_rate_about_tabulated(psi, x, self.scales, *fused)
         y = x / self.scales
         fy = self.f(psi, x) / self.scales
         if self.constant:
             return 2.0 * bilinear_form(y, self.solution.P_grid[0], fy)
         return self.solution.dW(psi, y, fy)
+
+    def _fused(self):
+        """The arguments of :func:`rotorlyap.analysis.fused.quadratic_rate_about_tabulated`
+        after ``psi``, ``x`` and the scales, or None where it does not apply (a constant
+        ``P``, a steady motion that is not a :class:`~rotorlyap.model.steady.TabulatedMotion`,
+        the numpy kernels, the blade's one-state kernels)."""
+        if self.constant or self.solution.interpolation != "hermite" or not use_compiled():
+            return None
+        args = self.__dict__.get("_fused_args", False)
+        if args is False:  # once: whether it applies, and its arrays
+            motion = getattr(self.steady.xi_function, "__self__", None)
+            kernel = self.blade.kernel
+            args = None
+            if (isinstance(motion, TabulatedMotion) and getattr(self.steady.dxi_function, "__self__", None) is motion
+                    and kernel is not None and kernel.block):
+                args = fused_arguments(self.blade, motion, self.solution)
+            object.__setattr__(self, "_fused_args", args)
+        return args
 
     def dW_linear(self, psi, x) -> np.ndarray:
         """``W'`` along the linearised motion ``x' = J x`` (``-x^T Q x`` up to the residual)."""

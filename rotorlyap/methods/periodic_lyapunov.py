@@ -359,14 +359,20 @@ class PeriodicLyapunovSolution:
         return (np.einsum("mi,mij,mj->m", x, self.dP(psi), x)
                 + 2.0 * np.einsum("mi,mij,mj->m", x, self.P(psi), xdot))
 
+    def kernel_grids(self) -> tuple[np.ndarray, np.ndarray]:
+        """The symmetric parts of ``P_grid`` and ``dP_grid``, contiguous: what the compiled
+        Hermite kernel reads (computed once)."""
+        grids = self.__dict__.get("_symmetric_grids")
+        if grids is None:
+            grids = tuple(np.ascontiguousarray(_symmetric(g)) for g in (self.P_grid, self.dP_grid))
+            object.__setattr__(self, "_symmetric_grids", grids)
+        return grids
+
     def _forms(self, psi, x, xdot):
         """``W`` and ``W'`` by the compiled kernel (hermite interpolation only)."""
         if not np.all(np.isfinite(psi)):
             raise ValueError("psi must be finite")
-        grids = self.__dict__.get("_symmetric_grids")
-        if grids is None:  # once: the symmetric parts, in the layout the kernel reads
-            grids = tuple(np.ascontiguousarray(_symmetric(g)) for g in (self.P_grid, self.dP_grid))
-            object.__setattr__(self, "_symmetric_grids", grids)
+        grids = self.kernel_grids()
         m = x.shape[0]
         w, dw = np.empty(m), np.empty(m)
         with_rate = xdot is not None

@@ -89,14 +89,7 @@ def built_pages() -> list[str]:
     )
 
 
-def _per_page(pages) -> list:
-    """Each page a parameter in its own xdist group: with ``--dist loadgroup`` (``.ci/run``)
-    the checks of one page run on one worker, which renders the page once, and the workers
-    share the pages between them."""
-    return [pytest.param(p, id=p, marks=pytest.mark.xdist_group(p)) for p in pages]
-
-
-PAGES = _per_page(built_pages()) or [pytest.param(
+PAGES = built_pages() or [pytest.param(
     None, id="no-build",
     marks=pytest.mark.skip(reason=f"no built book in {HTML}: build it first with "
                                   "`jupyter-book build . --all -W --keep-going`"))]
@@ -408,7 +401,7 @@ def test_works_offline(shown, page):
     assert not shown.exceptions, f"{page}: uncaught JavaScript exceptions {shown.exceptions[:5]}"
 
 
-@pytest.mark.parametrize("page", _per_page([p for p in CSV_FIGURE_PAGES if p in built_pages()]) or [
+@pytest.mark.parametrize("page", [p for p in CSV_FIGURE_PAGES if p in built_pages()] or [
     pytest.param(None, id="no-build", marks=pytest.mark.skip(reason="no built book"))])
 def test_every_figure_links_its_data_as_csv(shown, page):
     figures = shown.info["figures"]
