@@ -255,3 +255,16 @@ def test_unit_slips_are_refused_with_the_likely_mistake(changes, match):
 def test_the_largest_plausible_values_pass():
     """A tip just subsonic and a 34 deg pretwist are accepted (the checks catch unit slips only)."""
     BladeParameters(rotor_speed=0.99 * 340.294 / 7.85, twist=-0.6)
+
+
+def test_gauss_legendre_rules_are_numpys_computed_once_and_read_only():
+    """The cached rule is numpy's (nodes and weights to the bit), the same arrays on each call,
+    and cannot be changed in place by a caller (which would change every later blade)."""
+    from rotorlyap.model.parameters import gauss_legendre
+
+    x, w = gauss_legendre(16)
+    x_np, w_np = np.polynomial.legendre.leggauss(16)
+    assert np.array_equal(x, x_np) and np.array_equal(w, w_np)
+    assert gauss_legendre(16)[0] is x
+    with pytest.raises(ValueError):
+        x[0] = 0.0
