@@ -30,8 +30,8 @@ from rotorlyap.methods.simulation import simulate
 
 def unit_vectors(angles: np.ndarray, n: int) -> np.ndarray:
     """Hyperspherical coordinates ``(k, n - 1)`` -> unit vectors ``(k, n)``."""
-    # x_k = sin a_0 ... sin a_(k-1) cos a_k (x_(n-1) without the cosine): the products of the
-    # sines accumulated left to right, as a loop of in-place products would, at the cost of one
+    # x_k = sin a_0 ... sin a_(k-1) cos a_k (x_(n-1) without the cosine): one cumulative product
+    # of the sines, left to right as a loop of in-place products would take it (the same bits)
     angles = np.atleast_2d(angles)
     k = angles.shape[0]
     out = np.ones((k, n))
