@@ -905,6 +905,19 @@ def _forensic_params(case: str, choice: dict) -> BladeParameters:
     return replace(BladeParameters.table_i(case, **over), cg_position=cg)
 
 
+def _remembered(memo: dict, key, compute, error: type[Exception]):
+    """``memo[key]``, computed by ``compute()`` the first time; an ``error`` it raised is kept
+    and raised again on every later call with the same key."""
+    if key not in memo:
+        try:
+            memo[key] = compute()
+        except error as exc:
+            memo[key] = exc
+    if isinstance(memo[key], error):
+        raise memo[key]
+    return memo[key]
+
+
 def _forensic_row(choice: dict, cases, mu_values, n_psi: int, memo: dict | None = None) -> tuple:
     """Per case: hover stable, first mu, first side, last side, matches.
 
@@ -931,25 +944,16 @@ def _forensic_row(choice: dict, cases, mu_values, n_psi: int, memo: dict | None 
                 else:
                     target = {"hover": "none", "cyclic": "flapping", "trimmed": "propulsive"}[cond.split()[0]]
                     trim_key = ("trim", p, mu, target)
-                    if trim_key not in memo:
-                        try:
-                            tr = forward_flight_trim(p, mu, target)
-                            memo[trim_key] = (tr.params, tabulate_motion(tr.motion, 1024))
-                        except TrimError as exc:
-                            memo[trim_key] = exc
-                    if isinstance(memo[trim_key], TrimError):
-                        raise memo[trim_key]
-                    params, steady = memo[trim_key]
+
+                    def trimmed(p=p, mu=mu, target=target):
+                        tr = forward_flight_trim(p, mu, target)
+                        return tr.params, tabulate_motion(tr.motion, 1024)
+
+                    params, steady = _remembered(memo, trim_key, trimmed, TrimError)
                 key = ("verdict", params, mu, trim_key, choice["function"], choice["reading"], n_psi)
-                if key not in memo:
-                    try:
-                        memo[key] = blade_stability(params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi,
-                                                    test_disturbances=tests)
-                    except NotAsymptoticallyStableError as exc:
-                        memo[key] = exc
-                if isinstance(memo[key], NotAsymptoticallyStableError):
-                    raise memo[key]
-                r = memo[key]
+                r = _remembered(memo, key, lambda: blade_stability(
+                    params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi, test_disturbances=tests),
+                    NotAsymptoticallyStableError)
             except TrimError:
                 bad_rows.append(None)
                 continue
