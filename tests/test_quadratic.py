@@ -109,6 +109,33 @@ def test_the_fused_rate_is_the_rate_of_the_separate_kernels_to_the_last_bit(forw
         q.dW(np.array([np.nan]), np.zeros((1, 6)))
 
 
+def test_the_rays_rate_is_the_search_map_and_rate_to_the_last_bit(forward_flight):
+    """The band search's map of a search coordinate to its state on the ray and W' there, in
+    one compiled call (QuadraticFunction.ray_rate): the numbers of the search's own numpy map
+    (rotorlyap.methods.lyapunov.band_max_dw) followed by W', bit for bit; a zero coordinate
+    (the ray's level point) and coordinates beyond the sphere (clipped) included."""
+    from rotorlyap.methods import lyapunov
+
+    _, _, _, q = forward_flight
+    rng = np.random.default_rng(5)
+    c, bound = 0.3 * 0.05**2, 0.05
+    w_matrix = lambda psi: A[:, None] * q.P(psi) * A[None, :]  # noqa: E731
+    for m in (1, 9, 400):
+        psi = rng.uniform(-5.0, 15.0, m)
+        y = rng.normal(size=(m, 6)) * rng.uniform(0.0, 0.8, (m, 1))
+        y[0] = 0.0
+        checked = lyapunov._Checked(q.f, q.W, q.dW, 6, 1e-4)
+        t = np.linalg.norm(y, axis=1)
+        u = y / np.maximum(t, 1e-300)[:, None]
+        rc = lyapunov._ray_level(checked, psi, u, A, c, bound, w_matrix)
+        x = (u * (rc + np.clip(t, 0.0, 1.0) * (bound - rc))[:, None]) * A
+        w_unit, rate = q.ray_rate(psi, y, c, bound, A)
+        assert np.array_equal(rate, q.dW(psi, x)), m
+        assert np.array_equal(w_unit, q.W(psi, u * A)), m
+    with pytest.raises(ValueError, match="psi must be finite"):
+        q.ray_rate(np.array([np.inf]), np.ones((1, 6)), c, bound, A)
+
+
 @pytest.mark.slow
 def test_certificate_about_the_periodic_motion_in_forward_flight(forward_flight):
     """The engine certifies the forward-flight blade about its periodic motion (strict)."""

@@ -3,7 +3,8 @@
 * :mod:`~rotorlyap.analysis.functions`: the paper's energy function and quadratic functions
   from the periodic Lyapunov equation;
 * :mod:`~rotorlyap.analysis.fused`: the quadratic function's ``W'`` about a tabulated motion in
-  one compiled call;
+  one compiled call (and, for the band searches, with the map of a search coordinate to its
+  point on the ray);
 * :mod:`~rotorlyap.analysis.nonlinear_functions`: :func:`designed_function`, the augmented
   energy (and a polynomial family) designed on sampled states for the nonlinear range;
 * :mod:`~rotorlyap.analysis.region`: :func:`stable_region`, the region of stable motion found by

@@ -80,7 +80,7 @@ from ..model.blade import Blade
 from ..model.equations import flatten_states, sym3_matvec
 from ..model.steady import SteadyMotion, TabulatedMotion, as_steady_motion, disturbed_rhs
 from ..reporting import format_small
-from .fused import fused_arguments, quadratic_rate_about_tabulated
+from .fused import fused_arguments, quadratic_rate_about_tabulated, quadratic_rate_on_rays
 
 __all__ = [
     "DEFAULT_N_STEPS",
@@ -560,6 +560,23 @@ class QuadraticFunction:
         if self.constant:
             return 2.0 * bilinear_form(y, self.solution.P_grid[0], fy)
         return self.solution.dW(psi, y, fy)
+
+    def ray_rate(self, psi, y, level: float, bound: float, scales) -> tuple[np.ndarray, np.ndarray] | None:
+        """``W`` at ``u a`` and ``W'`` at the band's point of each search coordinate ``y`` of
+        :func:`rotorlyap.methods.lyapunov.band_max_dw` (``u = y / |y|``, ``a = scales``; see
+        :func:`rotorlyap.analysis.fused.quadratic_rate_on_rays`), in one compiled call; None
+        where that call does not apply (as :meth:`dW`'s fused call, and batches that
+        :meth:`dW` gives to the parallel kernels), and the search maps ``y`` itself."""
+        y = np.asarray(y, dtype=float)
+        if y.ndim != 2 or y.shape[1] != 6 or not (y.shape[0] < PARALLEL_MIN_STATES or threads() < 2):
+            return None
+        fused = self._fused()
+        if fused is None:
+            return None
+        psi = np.broadcast_to(np.asarray(psi, dtype=float), y.shape[:1])
+        if not np.all(np.isfinite(psi)):
+            raise ValueError("psi must be finite")
+        return quadratic_rate_on_rays(psi, y, level, bound, scales, self.scales, *fused)
 
     def _fused(self):
         """The arguments of :func:`rotorlyap.analysis.fused.quadratic_rate_about_tabulated`

@@ -10,6 +10,13 @@ some twenty numpy operations between them, and that Python between the kernels c
 the kernels. :func:`quadratic_rate_about_tabulated` runs the same kernels, with the same
 operations between them in the same order, inside one compiled function: the same numbers to
 the last bit (tested), without the Python.
+
+The searches of condition (h) (:func:`rotorlyap.methods.lyapunov.band_max_dw`) evaluate ``W'``
+at points of rays: a search coordinate ``y`` is a direction ``u = y / |y|`` and a fraction
+``t = |y|`` of the way from the ray's level radius ``r_c`` (where ``W = c``) out to the bound
+``A``. :func:`quadratic_rate_on_rays` maps ``y`` to the state and evaluates ``W'`` there in
+the same compiled call, with the operations of the search's numpy code in the same order (the
+same numbers to the last bit, tested).
 """
 
 from __future__ import annotations
@@ -24,7 +31,7 @@ from ..methods.periodic_lyapunov import _hermite_forms
 from ..model.compiled import _controls, _rhs_block_range
 from ..model.steady import _hermite_rows
 
-__all__ = ["fused_arguments", "quadratic_rate_about_tabulated"]
+__all__ = ["fused_arguments", "quadratic_rate_about_tabulated", "quadratic_rate_on_rays"]
 
 
 @jit(error_model="numpy")
@@ -48,6 +55,60 @@ def _quadratic_rate(psi, x, scales, values, slopes, ctrl, P, sc, st, tab, P_grid
             fy[i, c] = (h[i, c] - dxi[i, c]) / scales[c]
     w = np.empty(m)
     _hermite_forms(psi, y, fy, P_grid, D_grid, period, True, w, out)
+
+
+@jit(error_model="numpy")
+def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid,
+              period, w_unit, out):
+    m = y.shape[0]
+    n = y.shape[1]
+    t = np.empty(m)
+    u = np.empty((m, n))
+    z = np.empty((m, n))
+    for i in range(m):
+        s = 0.0
+        for k in range(n):  # numpy's norm of a row of six: the squares summed in order
+            s += y[i, k] * y[i, k]
+        ti = np.sqrt(s)
+        t[i] = ti
+        d = max(ti, 1e-300)
+        for k in range(n):
+            u[i, k] = y[i, k] / d
+            z[i, k] = (u[i, k] * scales[k]) / fscales[k]
+    _hermite_forms(psi, z, z, P_grid, D_grid, period, False, w_unit, out)  # W at u * scales
+    x = np.empty((m, n))
+    for i in range(m):
+        q = w_unit[i]
+        rc = bound
+        if q > 0:
+            r = np.sqrt(level / q)
+            rc = r if r < bound else bound
+        ti = min(max(t[i], 0.0), 1.0)
+        ri = rc + ti * (bound - rc)
+        for k in range(n):
+            x[i, k] = (u[i, k] * ri) * scales[k]
+    _quadratic_rate(psi, x, fscales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid, period, out)
+
+
+def quadratic_rate_on_rays(psi: np.ndarray, y: np.ndarray, level: float, bound: float, scales: np.ndarray,
+                           function_scales: np.ndarray, motion, controls: np.ndarray, kernel, grids: tuple,
+                           period: float) -> tuple[np.ndarray, np.ndarray]:
+    """``W`` on the unit sphere and ``W'`` on the band, for search coordinates ``y`` of the rays.
+
+    The point of search coordinate ``y`` (shape ``(m, 6)``, scaled) at azimuth ``psi`` (rad,
+    shape ``(m,)``) is ``x = (r u) a`` with ``u = y / |y|``, ``a = scales``,
+    ``r = r_c + min(|y|, 1) (A - r_c)`` and ``r_c = min(sqrt(c / W(psi, u a)), A)`` (``A``
+    where ``W(psi, u a) <= 0``), for ``W = x^T P(psi) x`` in the function's coordinates
+    ``x / function_scales``; the remaining arguments as :func:`quadratic_rate_about_tabulated`.
+    ``level`` is ``c`` (J) and ``bound`` is ``A`` (scaled norm). Returns ``W(psi, u a)`` and
+    ``W'(psi, x)`` (J per rad of azimuth), each of shape ``(m,)``."""
+    c = np.ascontiguousarray
+    m = y.shape[0]
+    w_unit, out = np.empty(m), np.empty(m)
+    _ray_rate(c(psi, dtype=float), c(y, dtype=float), float(level), float(bound), c(scales, dtype=float),
+              c(function_scales, dtype=float), motion.values, motion.slopes, controls, kernel.P,
+              kernel.scalars, kernel.stations, kernel.table, grids[0], grids[1], float(period), w_unit, out)
+    return w_unit, out
 
 
 def fused_arguments(blade, motion, solution) -> tuple:

@@ -783,6 +783,11 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         the same answer, with the work of every azimuth but one skipped
         (:class:`rotorlyap.methods.sampling.PsiFree`).
 
+    Where ``W`` and ``dW`` are bound methods of one object with a ``ray_rate`` method (a
+    :class:`rotorlyap.analysis.functions.QuadraticFunction` about a tabulated motion) and
+    ``w_matrix`` is given, the map from search coordinates to the band's points and ``W'``
+    there run in one compiled call of it: the same numbers, counted as here.
+
     Returns
     -------
     rotorlyap.methods.sampling.Extremum
@@ -803,6 +808,9 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
 
     k = psi.size
     g = lambda p, y: sys.dw(p, state(p, y))  # noqa: E731
+    ray = _ray_function(sys) if w_matrix is not None and inner is None else None
+    if ray is not None:  # the map y -> x and W' in one compiled call: the same numbers
+        g = _RayRate(sys, ray, g, c, A, scales)
     if psi_free:
         g = PsiFree(g, sys)
     if per_psi:
@@ -844,6 +852,35 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         value, p_best, y_best = _sweep_azimuth(g, value, p_best, y_best, period, int(n_sweep))
     i = int(np.argmax(value))
     return Extremum(value[i:i + 1], p_best[i:i + 1], state(p_best[i:i + 1], y_best[i:i + 1]))
+
+
+def _ray_function(sys: _Checked):
+    """``ray_rate`` of the object that both ``W`` and ``dW`` are bound to (a
+    :class:`rotorlyap.analysis.functions.QuadraticFunction`), else None."""
+    owner = getattr(sys.dW_user, "__self__", None)
+    ray = getattr(owner, "ray_rate", None)
+    if ray is None or getattr(sys.W, "__self__", None) is not owner:
+        return None
+    return ray
+
+
+class _RayRate:
+    """``W'`` at the band's points of search coordinates ``y`` (:func:`band_max_dw`) by
+    ``ray(psi, y, c, A, scales) -> (W(psi, u a), W')`` (or None: then by ``generic``), counted
+    as the generic path counts; a non-finite value goes to the generic path, whose checks say
+    what is wrong."""
+
+    def __init__(self, sys: _Checked, ray, generic, c: float, A: float, scales: np.ndarray):
+        self.sys, self.ray, self.generic, self.c, self.A, self.scales = sys, ray, generic, c, A, scales
+
+    def __call__(self, psi: np.ndarray, y: np.ndarray) -> np.ndarray:
+        res = self.ray(psi, y, self.c, self.A, self.scales)
+        if res is None or not (np.all(np.isfinite(res[0])) and np.all(np.isfinite(res[1]))):
+            return self.generic(psi, y)
+        m = y.shape[0]
+        self.sys.count += 2 * m  # W on the ray and W' at its point, as the generic path
+        self.sys.count_dw += m
+        return res[1]
 
 
 def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_keep: int = 16,
