@@ -240,6 +240,8 @@ def refine_extremum(
     val = evaluate(psi, rho, u)
     step = np.full(m, float(initial_step))
     eye = np.eye(n)
+    # the perturbations of u, in the order (+h e_0, -h e_0, +h e_1, ...)
+    offsets = np.array([s * h * eye[i] for i in range(n) for s in (1.0, -1.0)])[:, None, :]
     n_var = n + int(free_psi) + int(free_rho)
     for _ in range(n_iter):
         act = np.flatnonzero(step > min_step)
@@ -248,7 +250,7 @@ def refine_extremum(
         ua, pa, ra = u[act], psi[act], rho[act]
         k = act.size
         # perturbed copies: (2 * n_var, k, ...)
-        up = [_normalise(ua + s * h * eye[i]) for i in range(n) for s in (1.0, -1.0)]
+        up = [_normalise(ua[None] + offsets).reshape(-1, n)]  # all 2 n at once: the same numbers
         pp = [pa] * (2 * n)
         rp = [ra] * (2 * n)
         if free_psi:
