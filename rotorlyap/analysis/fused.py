@@ -62,32 +62,93 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
               period, w_unit, out):
     m = y.shape[0]
     n = y.shape[1]
-    t = np.empty(m)
-    u = np.empty((m, n))
-    z = np.empty((m, n))
-    for i in range(m):
-        s = 0.0
-        for k in range(n):  # numpy's norm of a row of six: the squares summed in order
-            s += y[i, k] * y[i, k]
-        ti = np.sqrt(s)
-        t[i] = ti
-        d = max(ti, 1e-300)
-        for k in range(n):
-            u[i, k] = y[i, k] / d
-            z[i, k] = (u[i, k] * scales[k]) / fscales[k]
-    _hermite_forms(psi, z, z, P_grid, D_grid, period, False, w_unit, out)  # W at u * scales
+    N = P_grid.shape[0]
+    hp = period / N
+    npair = n * (n + 1) // 2
+    # P(psi) and P'(psi) of each state, the upper triangle: interpolated once, used twice (W on
+    # the ray, W' at its point) with the operations of _hermite_forms
+    Pm = np.empty((m, npair))
+    Dm = np.empty((m, npair))
     x = np.empty((m, n))
+    z = np.empty(n)
     for i in range(m):
-        q = w_unit[i]
+        uu = (psi[i] % period) / hp
+        j = min(int(np.floor(uu)), N - 1)
+        tt = uu - j
+        j1 = (j + 1) % N
+        t2 = tt * tt
+        t3 = t2 * tt
+        a0 = 2 * t3 - 3 * t2 + 1
+        b0 = (t3 - 2 * t2 + tt) * hp
+        a1 = -2 * t3 + 3 * t2
+        b1 = (t3 - t2) * hp
+        da0 = (6 * t2 - 6 * tt) / hp
+        db0 = 3 * t2 - 4 * tt + 1
+        da1 = (-6 * t2 + 6 * tt) / hp
+        db1 = 3 * t2 - 2 * tt
+        k = 0
+        for r in range(n):
+            for c in range(r, n):
+                Pm[i, k] = (a0 * P_grid[j, r, c] + b0 * D_grid[j, r, c]
+                            + a1 * P_grid[j1, r, c] + b1 * D_grid[j1, r, c])
+                Dm[i, k] = (da0 * P_grid[j, r, c] + db0 * D_grid[j, r, c]
+                            + da1 * P_grid[j1, r, c] + db1 * D_grid[j1, r, c])
+                k += 1
+        s = 0.0
+        for c in range(n):  # numpy's norm of a row of six: the squares summed in order
+            s += y[i, c] * y[i, c]
+        ti = np.sqrt(s)
+        d = max(ti, 1e-300)
+        for c in range(n):
+            z[c] = ((y[i, c] / d) * scales[c]) / fscales[c]
+        acc = 0.0  # W at u * scales
+        k = 0
+        for r in range(n):
+            zr = z[r]
+            for c in range(r, n):
+                if r == c:
+                    acc += Pm[i, k] * zr * z[c]
+                else:
+                    acc += 2.0 * Pm[i, k] * zr * z[c]
+                k += 1
+        w_unit[i] = acc
         rc = bound
-        if q > 0:
-            r = np.sqrt(level / q)
-            rc = r if r < bound else bound
-        ti = min(max(t[i], 0.0), 1.0)
-        ri = rc + ti * (bound - rc)
-        for k in range(n):
-            x[i, k] = (u[i, k] * ri) * scales[k]
-    _quadratic_rate(psi, x, fscales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid, period, out)
+        if acc > 0:
+            rr = np.sqrt(level / acc)
+            rc = rr if rr < bound else bound
+        ri = rc + min(max(ti, 0.0), 1.0) * (bound - rc)
+        for c in range(n):
+            x[i, c] = ((y[i, c] / d) * ri) * scales[c]
+    # W' at x, as _quadratic_rate computes it
+    xi = np.empty((m, n))
+    dxi = np.empty((m, n))
+    _hermite_rows(psi, values, slopes, False, xi)
+    _hermite_rows(psi, values, slopes, True, dxi)
+    zs = np.empty((m, n))
+    for i in range(m):
+        for c in range(n):
+            zs[i, c] = xi[i, c] + x[i, c]
+    h = np.empty((m, n))
+    _rhs_block_range(psi, zs, ctrl, P, sc, st, tab, h, 0, m)
+    yy = np.empty(n)
+    fy = np.empty(n)
+    for i in range(m):
+        for c in range(n):
+            yy[c] = x[i, c] / fscales[c]
+            fy[c] = (h[i, c] - dxi[i, c]) / fscales[c]
+        acc_d = 0.0
+        k = 0
+        for r in range(n):
+            xr = yy[r]
+            for c in range(r, n):
+                p = Pm[i, k]
+                xc = yy[c]
+                if r == c:
+                    acc_d += Dm[i, k] * xr * xc + 2.0 * p * xr * fy[c]
+                else:
+                    acc_d += 2.0 * (Dm[i, k] * xr * xc + p * (xr * fy[c] + xc * fy[r]))
+                k += 1
+        out[i] = acc_d
 
 
 def quadratic_rate_on_rays(psi: np.ndarray, y: np.ndarray, level: float, bound: float, scales: np.ndarray,
