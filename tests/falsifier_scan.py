@@ -55,7 +55,10 @@ def scan_of(case: str):
     motions and strict candidates (each cell computed as the chapter computes it)."""
     motions = fv.steady_motions((case,), MU)
     cands = tuple(c for c in fv.CANDIDATES if c.reading == "strict")
-    scan = fv.scan_data(motions, candidates=cands, cases=(case,), mu_values=MU, **fv.SCAN_OPTIONS)
+    # in hover (the test run) the cells take seconds: here, not in worker processes (each would
+    # start an interpreter beside the other test worker's)
+    scan = fv.scan_data(motions, candidates=cands, cases=(case,), mu_values=MU,
+                        workers=1 if SCOPE == "hover" else None, **fv.SCAN_OPTIONS)
     return scan, motions
 
 

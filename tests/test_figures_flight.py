@@ -60,7 +60,7 @@ def test_the_verdicts_use_the_trims_own_hover_state():
     """The backward C.G. with compressible sections is unstable in hover at its trimmed state:
     no quadratic function exists there, so nothing may be certified (a continuation to a new
     equilibrium at the trimmed collective would find a stable one and certify it: unsafe)."""
-    scan = flight.verdict_data(cases=("backward",), mu_values=(0.0,), n_psi=8)
+    scan = flight.verdict_data(cases=("backward",), mu_values=(0.0,), n_psi=8, workers=1)
     assert blade_floquet(BladeParameters.flight_case("backward"), 0.0).exponents.real.max() > 0
     assert not scan.stable[1:].any()
     assert np.all(scan.category[1:] == 4)  # no quadratic function: marked, not called unstable

@@ -95,6 +95,17 @@ def test_process_pool_equals_serial(serial):
     assert_same_table(serial[0], pooled)
 
 
+def test_a_process_map_by_cost_returns_the_results_in_the_items_order():
+    """process_map(..., cost=...) submits the costliest items first and still returns
+    [fn(item) for item in items] in the items' order; the worker processes run one thread of the
+    compiled kernels (WORKER_ENVIRONMENT)."""
+    from rotorlyap.analysis.sweep import WORKER_ENVIRONMENT, process_map
+
+    items = [4.0, 9.0, 1.0, 16.0, 2.0]
+    assert process_map(math.sqrt, items, 2, cost=lambda x: x % 5) == [math.sqrt(x) for x in items]
+    assert WORKER_ENVIRONMENT["NUMBA_NUM_THREADS"] == "1"
+
+
 @pytest.mark.slow
 def test_local_dask_cluster_equals_serial(request):
     """scheduler='local' (a dask.distributed LocalCluster of 2 single-threaded worker processes) gives

@@ -400,8 +400,11 @@ class SweepResult:
 #: The environment of the worker processes: one BLAS/OpenMP thread each, as Dask's workers have
 #: (``distributed.nanny.pre-spawn-environ``): the processes already fill the cores, and the same
 #: thread count in every worker gives the same rounding (the trim's linear solves round differently
-#: with another number of BLAS threads).
-WORKER_ENVIRONMENT: dict[str, str] = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
+#: with another number of BLAS threads). One thread of the compiled kernels too (their results do
+#: not depend on it; two processes on two cores, each with two kernel threads, measured 31 s a
+#: scan cell against 25 s with one).
+WORKER_ENVIRONMENT: dict[str, str] = {"OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
+                                      "NUMBA_NUM_THREADS": "1"}
 
 
 @contextlib.contextmanager
@@ -451,18 +454,27 @@ def _run_processes(tasks: list[tuple], workers: int, progress: Callable[[int, in
 
 
 def process_map(fn: Callable[[Any], Any], items: Sequence[Any], workers: int | None = None,
-                progress: Callable[[int, int], None] | None = None) -> list:
+                progress: Callable[[int, int], None] | None = None,
+                cost: Callable[[Any], float] | None = None) -> list:
     """``[fn(item) for item in items]`` in ``workers`` fresh processes, results in the items' order.
 
     The processes of :func:`sweep` (module docstring): started by ``"spawn"`` with
     :data:`WORKER_ENVIRONMENT` (one BLAS/OpenMP thread each), so that each result is the one a
     fresh interpreter computes. ``fn`` must be a module-level function and the items picklable;
-    items are submitted in order, so put the longest first. ``workers`` defaults to
+    items are submitted in order, so put the longest first, or give ``cost(item)``: then they
+    are submitted by decreasing cost (in order among equal costs). ``workers`` defaults to
     :func:`available_cores`; ``progress(done, total)`` is called as results arrive.
     """
     workers = available_cores() if workers is None else int(workers)
     if workers < 1:
         raise ValueError(f"workers must be >= 1, got {workers}")
+    if cost is not None:
+        order = sorted(range(len(items)), key=lambda k: -cost(items[k]))
+        done = process_map(fn, [items[k] for k in order], workers, progress)
+        out = [None] * len(items)
+        for k, r in zip(order, done):
+            out[k] = r
+        return out
     progress = progress or _no_progress
     # "spawn": a fresh interpreter per worker, started with WORKER_ENVIRONMENT (a forked child
     # would inherit this process's BLAS threads, and numba's GNU OpenMP layer aborts a child forked

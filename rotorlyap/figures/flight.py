@@ -26,6 +26,7 @@ import numpy as np
 from ..analysis.floquet import blade_floquet
 from ..analysis.functions import quadratic_function
 from ..analysis.stability import blade_stability
+from ..analysis.sweep import available_cores, process_map
 from ..conventions import PAPER_TEST_DISTURBANCES, TWO_PI
 from ..errors import NotAsymptoticallyStableError, TrimError
 from ..model.blade import Blade
@@ -918,69 +919,74 @@ def _remembered(memo: dict, key, compute, error: type[Exception]):
     return memo[key]
 
 
-def _forensic_row(choice: dict, cases, mu_values, n_psi: int, memo: dict | None = None) -> tuple:
-    """Per case: hover stable, first mu, first side, last side, matches.
+def _forensic_case(task: tuple) -> list:
+    """``(combinations, case, mu_values, n_psi)`` -> :func:`_forensic_cell` of each combination
+    for one case, sharing one memo (module level, so that worker processes can run it)."""
+    combinations, case, mu_values, n_psi = task
+    memo: dict = {}
+    return [_forensic_cell(choice, case, mu_values, n_psi, memo) for choice in combinations]
+
+
+def _forensic_cell(choice: dict, case: str, mu_values, n_psi: int, memo: dict) -> tuple:
+    """One case of a row: hover stable, first mu, first side, last side, matches.
 
     ``memo`` keeps the trims and verdicts of earlier rows by their inputs (the blade's
     parameters, the advance ratio, the trim's target, the function and the reading): many
     combinations share them (every condition has the same hover, both functions the same trims).
     """
-    memo = {} if memo is None else memo
-    out = []
-    for case in cases:
-        p = _forensic_params(case, choice)
-        lyap = quadratic_function if choice["function"] == "quadratic" else None
-        tests = PAPER_TEST_DISTURBANCES if choice["reading"] == "practical" else None
-        bad_rows, hover_ok = [], False
-        psi = TWO_PI * np.arange(n_psi) / n_psi
-        for mu in mu_values:
-            mu = float(mu)
-            cond = choice["condition"]
-            try:
-                if mu == 0.0 or cond.startswith("paper"):
-                    # the collective is left to the hover trim, whose equilibrium is kept
-                    # (a new one at the trimmed collective may lie on another branch)
-                    params, steady, trim_key = p, None, None
-                else:
-                    target = {"hover": "none", "cyclic": "flapping", "trimmed": "propulsive"}[cond.split()[0]]
-                    trim_key = ("trim", p, mu, target)
+    p = _forensic_params(case, choice)
+    lyap = quadratic_function if choice["function"] == "quadratic" else None
+    tests = PAPER_TEST_DISTURBANCES if choice["reading"] == "practical" else None
+    bad_rows, hover_ok = [], False
+    psi = TWO_PI * np.arange(n_psi) / n_psi
+    for mu in mu_values:
+        mu = float(mu)
+        cond = choice["condition"]
+        try:
+            if mu == 0.0 or cond.startswith("paper"):
+                # the collective is left to the hover trim, whose equilibrium is kept
+                # (a new one at the trimmed collective may lie on another branch)
+                params, steady, trim_key = p, None, None
+            else:
+                target = {"hover": "none", "cyclic": "flapping", "trimmed": "propulsive"}[cond.split()[0]]
+                trim_key = ("trim", p, mu, target)
 
-                    def trimmed(p=p, mu=mu, target=target):
-                        tr = forward_flight_trim(p, mu, target)
-                        return tr.params, tabulate_motion(tr.motion, 1024)
+                def trimmed(p=p, mu=mu, target=target):
+                    tr = forward_flight_trim(p, mu, target)
+                    return tr.params, tabulate_motion(tr.motion, 1024)
 
-                    params, steady = _remembered(memo, trim_key, trimmed, TrimError)
-                key = ("verdict", params, mu, trim_key, choice["function"], choice["reading"], n_psi)
-                r = _remembered(memo, key, lambda: blade_stability(
-                    params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi, test_disturbances=tests),
-                    NotAsymptoticallyStableError)
-            except TrimError:
-                bad_rows.append(None)
-                continue
-            except NotAsymptoticallyStableError:
-                bad_rows.append("no quadratic function")
-                continue
-            if mu == 0.0:
-                hover_ok = bool(np.all(r.stable))
-            cat = _category(r)
-            bad_rows.append((cat == 1) | (cat == 3))
-            psi = np.asarray(r.psi)
-        first_mu, first_side = float("nan"), "none"
-        for mu, bad in zip(mu_values[1:], bad_rows[1:]):
-            if bad is None or isinstance(bad, str):
-                first_mu, first_side = float(mu), "no steady motion" if bad is None else bad
-                break
-            if bad.any():
-                first_mu, first_side = float(mu), _side(bad, psi)
-                break
-        last = bad_rows[-1]
-        last_side = "no steady motion" if last is None else last if isinstance(last, str) else _side(last, psi)
-        match = hover_ok and first_side == "retreating" and last_side == "both"
-        out.append((hover_ok, first_mu, first_side, last_side, match))
-    return tuple(out)
+                params, steady = _remembered(memo, trim_key, trimmed, TrimError)
+            key = ("verdict", params, mu, trim_key, choice["function"], choice["reading"], n_psi)
+            r = _remembered(memo, key, lambda: blade_stability(
+                params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi, test_disturbances=tests),
+                NotAsymptoticallyStableError)
+        except TrimError:
+            bad_rows.append(None)
+            continue
+        except NotAsymptoticallyStableError:
+            bad_rows.append("no quadratic function")
+            continue
+        if mu == 0.0:
+            hover_ok = bool(np.all(r.stable))
+        cat = _category(r)
+        bad_rows.append((cat == 1) | (cat == 3))
+        psi = np.asarray(r.psi)
+    first_mu, first_side = float("nan"), "none"
+    for mu, bad in zip(mu_values[1:], bad_rows[1:]):
+        if bad is None or isinstance(bad, str):
+            first_mu, first_side = float(mu), "no steady motion" if bad is None else bad
+            break
+        if bad.any():
+            first_mu, first_side = float(mu), _side(bad, psi)
+            break
+    last = bad_rows[-1]
+    last_side = "no steady motion" if last is None else last if isinstance(last, str) else _side(last, psi)
+    match = hover_ok and first_side == "retreating" and last_side == "both"
+    return (hover_ok, first_mu, first_side, last_side, match)
 
 
-def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: int = 36) -> ForensicData:
+def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: int = 36, *,
+                  workers: int | None = None) -> ForensicData:
     """Run the paper's picture test for each combination of :data:`FORENSIC_FACTORS` choices.
 
     Parameters
@@ -993,6 +999,11 @@ def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: 
         function).
     cases, mu_values, n_psi
         Cases, advance ratios (the first must be 0) and azimuths.
+    workers : int, optional
+        The cases are independent (each shares its trims and verdicts between the combinations,
+        :func:`_forensic_case`): with ``workers`` other than 1 (default: every core) they run in
+        that many fresh processes (:func:`rotorlyap.analysis.sweep.process_map`); ``workers=1``
+        here, one after the other. The table does not depend on where they ran.
     """
     names = tuple(FORENSIC_FACTORS)
     if combinations is None:
@@ -1011,10 +1022,13 @@ def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: 
     mu_values = np.asarray(mu_values, dtype=float)
     if mu_values[0] != 0.0:
         raise ValueError("mu_values must start with 0 (hover)")
+    combinations = tuple(combinations)
+    tasks = [(combinations, case, mu_values, n_psi) for case in cases]
+    workers = min(available_cores() if workers is None else int(workers), len(tasks))
+    per_case = process_map(_forensic_case, tasks, workers) if workers > 1 else [_forensic_case(t) for t in tasks]
     rows, hover, first_mu, first_side, last_side, match = [], [], [], [], [], []
-    memo: dict = {}
-    for choice in combinations:
-        res = _forensic_row(choice, cases, mu_values, n_psi, memo)
+    for k, choice in enumerate(combinations):
+        res = tuple(cells[k] for cells in per_case)
         rows.append(tuple(choice[n] for n in names))
         hover.append([r[0] for r in res])
         first_mu.append([r[1] for r in res])
@@ -1039,13 +1053,37 @@ VERDICT_CANDIDATES = (
 )
 
 
-def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candidates=VERDICT_CANDIDATES):
+def _verdict_cell(task: tuple):
+    """One cell of :func:`verdict_data` (module level, so that worker processes can run it):
+    ``(params, mu, steady, n_psi, function, reading)`` -> the result of
+    :func:`~rotorlyap.analysis.stability.blade_stability`, or the message of a
+    :class:`~rotorlyap.errors.NotAsymptoticallyStableError`."""
+    params, mu, steady, n_psi, function, reading = task
+    try:
+        return blade_stability(params, mu, steady=steady, n_psi=n_psi,
+                               lyapunov=quadratic_function if function == "quadratic" else None,
+                               test_disturbances=PAPER_TEST_DISTURBANCES if reading == "practical" else None)
+    except NotAsymptoticallyStableError as exc:
+        return str(exc)
+
+
+def _verdict_cost(task: tuple) -> int:
+    """Rank of a cell's expected cost (for the process pool): the quadratic function's strict
+    reading about a periodic motion first."""
+    _, mu, _, _, function, reading = task
+    return int(function == "quadratic") + int(reading == "strict") + 2 * int(mu > 0)
+
+
+def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candidates=VERDICT_CANDIDATES,
+                 workers: int | None = None):
     """The engine's verdicts about the trimmed helicopter's periodic motion
     (:meth:`BladeParameters.flight_case`, :func:`forward_flight_trim`, its own state in hover),
     as a :class:`rotorlyap.figures.validation.ScanData` (for
     :func:`rotorlyap.figures.validation.figure_scan`): categories of
     :data:`rotorlyap.figures.validation.SCAN_CATEGORY_NAMES`, 4 where the linearised blade is
-    unstable and no quadratic function exists.
+    unstable and no quadratic function exists. The trims run here; the cells, independent, in
+    ``workers`` fresh processes (default: every core; 1: here, one after the other; the same
+    verdicts either way, :func:`rotorlyap.analysis.sweep.process_map`).
     """
     from .validation import ScanData
 
@@ -1062,29 +1100,29 @@ def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candida
     lam = np.zeros(shape)
     aused = np.full(shape[:3], np.nan)
     astep3 = np.full(shape[:3], np.nan)
-    msgs = []
+    tasks, where = [], []
     for c, (_, function, reading) in enumerate(candidates):
-        per_case = []
         for i, case in enumerate(cases):
-            row = []
             for j, mu in enumerate(mu_values):
                 tr = trims[(case, float(mu))]
-                try:
-                    r = blade_stability(tr.params, float(mu), steady=steadies[(case, float(mu))], n_psi=n_psi,
-                                        lyapunov=quadratic_function if function == "quadratic" else None,
-                                        test_disturbances=PAPER_TEST_DISTURBANCES if reading == "practical" else None)
-                except NotAsymptoticallyStableError as exc:
-                    cat[c, i, j] = 4
-                    row.append(str(exc))
-                    continue
-                stable[c, i, j] = r.stable
-                cat[c, i, j] = _category(r)
-                lam[c, i, j] = r.lambda0
-                aused[c, i, j] = r.A
-                astep3[c, i, j] = r.A_step3
-                row.append(r.message)
-            per_case.append(tuple(row))
-        msgs.append(tuple(per_case))
+                tasks.append((tr.params, float(mu), steadies[(case, float(mu))], n_psi, function, reading))
+                where.append((c, i, j))
+    workers = min(available_cores() if workers is None else int(workers), len(tasks))
+    outcomes = (process_map(_verdict_cell, tasks, workers, cost=_verdict_cost) if workers > 1
+                else [_verdict_cell(t) for t in tasks])
+    msgs = [[[None] * mu_values.size for _ in cases] for _ in candidates]
+    for (c, i, j), r in zip(where, outcomes):
+        if isinstance(r, str):
+            cat[c, i, j] = 4
+            msgs[c][i][j] = r
+            continue
+        stable[c, i, j] = r.stable
+        cat[c, i, j] = _category(r)
+        lam[c, i, j] = r.lambda0
+        aused[c, i, j] = r.A
+        astep3[c, i, j] = r.A_step3
+        msgs[c][i][j] = r.message
+    msgs = [tuple(tuple(row) for row in per_case) for per_case in msgs]
     return ScanData(cases=tuple(cases), mu_values=mu_values, psi=psi,
                     keys=tuple(f"{f}_{r}" for _, f, r in candidates), labels=tuple(lab for lab, _, _ in candidates),
                     readings=tuple(r for _, _, r in candidates), category=cat, stable=stable, lambda0=lam,

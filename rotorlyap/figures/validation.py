@@ -34,7 +34,7 @@ the advancing side; growth rates and frequencies per rev.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -1076,8 +1076,36 @@ class ScanData:
         return out
 
 
+def _scan_cell(task: tuple):
+    """One cell of :func:`scan_data` (module level, so that worker processes can run it):
+    ``(function, reading, case, mu, steady, Q, A, n_psi, engine_options)`` -> the
+    :class:`~rotorlyap.methods.lyapunov.TechnicalStabilityResult`, or the message of a
+    :class:`~rotorlyap.errors.NotAsymptoticallyStableError`."""
+    function, reading, case, mu, steady, Q, A, n_psi, engine_options = task
+    if function == "energy":
+        lyap = None
+    elif function == "quadratic":
+        lyap = quadratic_function
+    else:
+        lyap = lambda b, steady: quadratic_function(b, steady, Q, label="optimised")  # noqa: E731
+    tests = PAPER_TEST_DISTURBANCES if reading == "practical" else None
+    try:
+        return blade_stability(BladeParameters.table_i(case), mu, lyapunov=lyap, steady=steady, A=A,
+                               n_psi=n_psi, test_disturbances=tests, **engine_options)
+    except NotAsymptoticallyStableError as exc:
+        return str(exc)
+
+
+def _scan_cost(task: tuple) -> int:
+    """Rank of a cell's expected cost (for the process pool, which starts the costliest first):
+    the quadratic functions about a periodic motion take seconds, the others a fraction."""
+    function, _, _, mu, steady, *_ = task
+    return int(function != "energy") + 2 * int(function != "energy" and steady is not None and mu > 0)
+
+
 def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_values=MU_SCAN,
-              n_psi: int = 24, A: float | None = None, **engine_options) -> ScanData:
+              n_psi: int = 24, A: float | None = None, workers: int | None = None,
+              **engine_options) -> ScanData:
     """Run :func:`rotorlyap.analysis.stability.blade_stability` for every candidate, case and advance ratio.
 
     The quadratic functions use the default scales as their coordinates (so ``Q = I`` is
@@ -1085,7 +1113,14 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
     (:func:`rotorlyap.analysis.functions.optimised_quadratic_function`) and kept at every advance
     ratio. Where no quadratic function exists (unstable linearisation) or no periodic motion
     was found, the cells get categories 4 and 5 instead of a result.
+
+    The cells are independent: with ``workers`` other than 1 (default: every core) they run in
+    that many fresh processes (:func:`rotorlyap.analysis.sweep.process_map`, one BLAS thread
+    each, the longest cells first); ``workers=1`` runs them here, one after the other. Each
+    cell's result does not depend on where it ran.
     """
+    from ..analysis.sweep import available_cores, process_map
+
     cases = motions.cases if cases is None else tuple(cases)
     mu_values = np.asarray(mu_values, dtype=float)
     A = DEFAULT_A if A is None else float(A)
@@ -1105,12 +1140,10 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
     lam = np.zeros(shape)
     aused = np.full(shape[:3], np.nan)
     astep3 = np.full(shape[:3], np.nan)
-    msgs, results, psi = [], {}, 2 * np.pi * np.arange(n_psi) / n_psi
+    msgs = [[[None] * mu_values.size for _ in cases] for _ in candidates]
+    tasks, where = [], []
     for c, cand in enumerate(candidates):
-        per_case = []
         for i, case in enumerate(cases):
-            p = BladeParameters.table_i(case)
-            row = []
             for j, mu in enumerate(mu_values):
                 mu = float(mu)
                 steady = None
@@ -1118,41 +1151,39 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
                     steady = motions.steady(case, mu)
                     if steady is None:
                         cat[c, i, j] = 5
-                        row.append("no periodic motion found")
+                        msgs[c][i][j] = "no periodic motion found"
                         continue
-                if cand.function == "energy":
-                    lyap = None
-                elif cand.function == "quadratic":
-                    lyap = quadratic_function
-                else:
+                Q = None
+                if cand.function not in ("energy", "quadratic"):  # the optimised weight
                     Q = Qopt[case]
                     if isinstance(Q, Exception):
                         cat[c, i, j] = 4
-                        row.append(str(Q))
+                        msgs[c][i][j] = str(Q)
                         continue
-                    lyap = lambda b, steady, Q=Q: quadratic_function(b, steady, Q, label="optimised")  # noqa: E731
-                tests = PAPER_TEST_DISTURBANCES if cand.reading == "practical" else None
-                try:
-                    r = blade_stability(p, mu, lyapunov=lyap, steady=steady, A=A, n_psi=n_psi,
-                                        test_disturbances=tests, **engine_options)
-                except NotAsymptoticallyStableError as exc:
-                    cat[c, i, j] = 4
-                    row.append(str(exc))
-                    continue
-                results[(cand.key, case, round(mu, 6))] = r
-                cat[c, i, j] = _category(r)
-                stable[c, i, j] = r.stable
-                lam[c, i, j] = r.lambda0
-                aused[c, i, j] = r.A
-                astep3[c, i, j] = r.A_step3
-                psi = np.asarray(r.psi)
-                row.append(r.message)
-            per_case.append(tuple(row))
-        msgs.append(tuple(per_case))
+                tasks.append((cand.function, cand.reading, case, mu, steady, Q, A, n_psi, engine_options))
+                where.append((c, i, j))
+    workers = min(available_cores() if workers is None else int(workers), max(len(tasks), 1))
+    outcomes = (process_map(_scan_cell, tasks, workers, cost=_scan_cost) if workers > 1
+                else [_scan_cell(t) for t in tasks])
+    results, psi = {}, 2 * np.pi * np.arange(n_psi) / n_psi
+    for (c, i, j), r in zip(where, outcomes):
+        if isinstance(r, str):
+            cat[c, i, j] = 4
+            msgs[c][i][j] = r
+            continue
+        results[(candidates[c].key, cases[i], round(float(mu_values[j]), 6))] = r
+        cat[c, i, j] = _category(r)
+        stable[c, i, j] = r.stable
+        lam[c, i, j] = r.lambda0
+        aused[c, i, j] = r.A
+        astep3[c, i, j] = r.A_step3
+        psi = np.asarray(r.psi)
+        msgs[c][i][j] = r.message
     return ScanData(cases=cases, mu_values=mu_values, psi=psi, keys=tuple(cd.key for cd in candidates),
                     labels=tuple(cd.label for cd in candidates),
                     readings=tuple(cd.reading for cd in candidates), category=cat, stable=stable,
-                    lambda0=lam, A_used=aused, A_step3=astep3, weights=weights, messages=tuple(msgs), results=results)
+                    lambda0=lam, A_used=aused, A_step3=astep3, weights=weights,
+                    messages=tuple(tuple(tuple(row) for row in per_case) for per_case in msgs), results=results)
 
 
 _SCAN_HATCHES = CATEGORY_HATCHES + SCAN_EXTRA_HATCHES
@@ -1467,27 +1498,46 @@ def rule_changes(scan: ScanData, motions: SteadyMotions, *, keys=("quadratic", "
                        lambda0_sound=l_s, n_psi=int(scan.psi.size))
 
 
+def _finer_search(task: tuple) -> tuple:
+    """One rerun of :func:`search_check` (module level, for worker processes): ``(scan, motions,
+    key, case, mu, options)`` -> ``(A, min lambda0, stable azimuths)`` of the cell's
+    :func:`technical_stability` with the scan's options changed by ``options``."""
+    scan, motions, key, case, mu, opts = task
+    cell = cell_system(scan, motions, key, case, mu)
+    r0, fun = cell.result, cell.function
+    a = np.asarray(r0.scales)
+    w_matrix = (lambda psi: a[:, None] * fun.P(psi) * a[None, :]) if cell.quadratic else None
+    r = technical_stability(cell.f, fun.W, r0.A_requested, scales=a, dW=fun.dW, w_matrix=w_matrix,
+                            psi_free=cell.psi_free, **{**SCAN_OPTIONS, "n_psi": r0.psi.size, **opts})
+    return _search_row(r)
+
+
+def _search_row(r) -> tuple:
+    return r.A, (r.lambda0[r.stable].min() if r.stable.any() else 0.0), int(r.stable.sum())
+
+
 def search_check(scan: ScanData, motions: SteadyMotions, *, case: str = "forward",
                  checks: tuple = ((0.0, "quadratic"), (0.0, "quadratic-opt"), (0.25, "quadratic"),
                                   (0.2, "quadratic-opt")),
-                 n_sphere: int = 1024, n_iter: int = 160) -> SearchCheck:
+                 n_sphere: int = 1024, n_iter: int = 160, workers: int | None = None) -> SearchCheck:
     """Rerun the ``(mu, key)`` cells of ``checks`` (strict candidates of the scan) with
     ``n_sphere`` quasi-random directions per sphere, and again with ``n_iter`` iterations of
-    each local ascent, on the scan's azimuths and function (:func:`cell_system`)."""
+    each local ascent, on the scan's azimuths and function (:func:`cell_system`). The reruns are
+    independent: in ``workers`` fresh processes (default: every core; 1: here), the same numbers
+    either way (:func:`rotorlyap.analysis.sweep.process_map`)."""
+    from ..analysis.sweep import available_cores, process_map
+
     runs = ({"n_sphere": n_sphere}, {"n_iter": n_iter})
     A, lam, n = (np.zeros((len(checks), 1 + len(runs))) for _ in range(3))
+    cells = {(key, case, round(float(mu), 6)) for mu, key in checks}
+    small = replace(scan, results={k: v for k, v in scan.results.items() if k in cells})  # what the reruns need
+    tasks = [(small, motions, key, case, float(mu), opts) for mu, key in checks for opts in runs]
+    workers = min(available_cores() if workers is None else int(workers), len(tasks))
+    rows = process_map(_finer_search, tasks, workers) if workers > 1 else [_finer_search(t) for t in tasks]
     for k, (mu, key) in enumerate(checks):
-        cell = cell_system(scan, motions, key, case, mu)
-        r0, fun = cell.result, cell.function
-        a = np.asarray(r0.scales)
-        w_matrix = (lambda psi: a[:, None] * fun.P(psi) * a[None, :]) if cell.quadratic else None
-        finer = [technical_stability(cell.f, fun.W, r0.A_requested, scales=a, dW=fun.dW, w_matrix=w_matrix,
-                                     psi_free=cell.psi_free, **{**SCAN_OPTIONS, "n_psi": r0.psi.size, **opts})
-                 for opts in runs]
-        for col, r in enumerate([r0] + finer):
-            A[k, col] = r.A
-            lam[k, col] = r.lambda0[r.stable].min() if r.stable.any() else 0.0
-            n[k, col] = int(r.stable.sum())
+        for col, row in enumerate([_search_row(scan.result(key, case, mu))]  # the reruns checked it exists
+                                  + rows[k * len(runs):(k + 1) * len(runs)]):
+            A[k, col], lam[k, col], n[k, col] = row
     return SearchCheck(case=case, keys=tuple(key for _, key in checks),
                        mu_values=np.array([mu for mu, _ in checks], dtype=float), n_sphere=int(n_sphere),
                        n_iter=int(n_iter), A=A, min_lambda0=lam, n_stable=n)

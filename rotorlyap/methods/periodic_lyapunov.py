@@ -512,7 +512,8 @@ def _grid_values(sys: _System, period: float, Q: np.ndarray, S, G, trace_integra
     P_grid = np.empty((K, n, n))
     Pnext = P0
     for j in range(K - 1, -1, -1):
-        Pnext = P_grid[j] = _symmetric(S[j].T @ Pnext @ S[j] + G[j])
+        X = S[j].T @ Pnext @ S[j] + G[j]
+        Pnext = P_grid[j] = 0.5 * (X + X.T)  # _symmetric of one matrix, without its call
     periodicity_error = float(np.max(np.abs(P_grid[0] - P0)) / np.max(np.abs(P0)))
     P_grid[0] = P0
     return res, P_grid, periodicity_error
