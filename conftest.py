@@ -12,7 +12,10 @@ explains the design.
    kernels (``NUMBA_NUM_THREADS``; unless the environment already says how many): the workers
    already fill the cores, and threads waiting for a busy core cost more than they save
    (measured: two processes side by side, each a forward-flight scan cell, 31 s each with two
-   kernel threads, 25 s with one). The numbers do not depend on it (a compiled kernel computes
+   kernel threads, 25 s with one). Likewise one process for the chapters that spread their cells
+   over every core (``ROTORLYAP_WORKERS``, :func:`rotorlyap.analysis.sweep.available_cores`:
+   measured, the test command 688 s with chapters 7 and 8 in one process each, 720 s with two
+   worker processes each). The numbers do not depend on it (a compiled kernel computes
    each state alone, :mod:`rotorlyap.jit`; a committed output prints only the digits that
    survive another BLAS, "What a committed output may print" in the README).
 """
@@ -31,7 +34,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent / "book" / "_ext"))
 import notebook_execution  # noqa: E402
 
 _WORKER_KEY = "rotorlyap_executed_notebooks"
-_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS")
+_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS",
+                     "ROTORLYAP_WORKERS")
 
 
 def pytest_configure(config):

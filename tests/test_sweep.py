@@ -106,6 +106,21 @@ def test_a_process_map_by_cost_returns_the_results_in_the_items_order():
     assert WORKER_ENVIRONMENT["NUMBA_NUM_THREADS"] == "1"
 
 
+def test_the_default_number_of_workers_follows_rotorlyap_workers(monkeypatch):
+    """ROTORLYAP_WORKERS sets the default number of worker processes (the test run sets 1 in each
+    xdist worker); anything but a positive integer is refused, saying what is allowed."""
+    from rotorlyap.analysis.sweep import available_cores
+
+    monkeypatch.setenv("ROTORLYAP_WORKERS", "3")
+    assert available_cores() == 3
+    for bad in ("0", "two", "-1"):
+        monkeypatch.setenv("ROTORLYAP_WORKERS", bad)
+        with pytest.raises(ValueError, match="must be a positive integer"):
+            available_cores()
+    monkeypatch.delenv("ROTORLYAP_WORKERS")
+    assert available_cores() >= 1
+
+
 @pytest.mark.slow
 def test_local_dask_cluster_equals_serial(request):
     """scheduler='local' (a dask.distributed LocalCluster of 2 single-threaded worker processes) gives

@@ -10,7 +10,8 @@ the message in the ``error`` column; the sweep goes on.
 Where the points run
 --------------------
 * ``workers=1``: one after the other in this process;
-* ``workers=None`` (default) or ``N``: ``N`` (default: every core, :func:`available_cores`) processes
+* ``workers=None`` (default) or ``N``: ``N`` (default: every core, or ``ROTORLYAP_WORKERS``,
+  :func:`available_cores`) processes
   of a :class:`concurrent.futures.ProcessPoolExecutor`, started by ``"spawn"`` with one
   BLAS/OpenMP thread each (:data:`WORKER_ENVIRONMENT`), never by ``"fork"``: numba's OpenMP
   threading layer (GNU OpenMP) aborts a child forked after its threads started. As with any
@@ -59,8 +60,8 @@ from ..model.forward_trim import TRIM_TARGETS
 from ..model.parameters import CG_POSITIONS, BladeParameters
 from .certify import FUNCTIONS, Certificate, certify
 
-__all__ = ["DASK_INSTALL", "GRID_SETTINGS", "RESULT_COLUMNS", "WORKER_ENVIRONMENT", "SweepResult", "available_cores",
-           "evaluate_point", "grid_names", "grid_value_type", "process_map", "sweep", "sweep_fields"]
+__all__ = ["DASK_INSTALL", "GRID_SETTINGS", "RESULT_COLUMNS", "WORKER_ENVIRONMENT", "WORKERS_VARIABLE", "SweepResult",
+           "available_cores", "evaluate_point", "grid_names", "grid_value_type", "process_map", "sweep", "sweep_fields"]
 
 DASK_INSTALL: str = 'pip install "dask[distributed]"'
 """The install line of the optional Dask dependency (``scheduler=``)."""
@@ -424,9 +425,25 @@ def _environment(values: Mapping[str, str]):
                 os.environ[k] = v
 
 
+#: Environment variable that sets the default number of worker processes (a positive integer):
+#: the test run sets it to 1 in each of its xdist workers, which already fill the cores
+#: (``conftest.py``), as it sets one BLAS and kernel thread.
+WORKERS_VARIABLE = "ROTORLYAP_WORKERS"
+
+
 def available_cores() -> int:
-    """The cores this process may run on (its CPU affinity where the platform tells it, else
-    ``os.cpu_count()``): the default number of workers."""
+    """The default number of workers: ``ROTORLYAP_WORKERS`` where it is set, else the cores this
+    process may run on (its CPU affinity where the platform tells it, else ``os.cpu_count()``)."""
+    value = os.environ.get(WORKERS_VARIABLE, "").strip()
+    if value:
+        try:
+            n = int(value)
+        except ValueError:
+            n = 0
+        if n < 1:
+            raise ValueError(f"{WORKERS_VARIABLE} must be a positive integer (the default number of worker "
+                             f"processes), got {value!r}")
+        return n
     if hasattr(os, "process_cpu_count"):  # Python >= 3.13
         return os.process_cpu_count() or 1
     if hasattr(os, "sched_getaffinity"):
