@@ -27,7 +27,7 @@ from ..jit import jit
 
 # the kernels joined here are the model's and the method's own (private to their modules: this
 # module is their one other caller)
-from ..methods.periodic_lyapunov import _hermite_forms
+from ..methods.periodic_lyapunov import _hermite_forms, _hermite_weights
 from ..model.compiled import _controls, _rhs_block_range
 from ..model.steady import _hermite_rows
 
@@ -63,7 +63,6 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
     m = y.shape[0]
     n = y.shape[1]
     N = P_grid.shape[0]
-    hp = period / N
     npair = n * (n + 1) // 2
     # P(psi) and P'(psi) of each state, the upper triangle: interpolated once, used twice (W on
     # the ray, W' at its point) with the operations of _hermite_forms
@@ -72,20 +71,7 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
     x = np.empty((m, n))
     z = np.empty(n)
     for i in range(m):
-        uu = (psi[i] % period) / hp
-        j = min(int(np.floor(uu)), N - 1)
-        tt = uu - j
-        j1 = (j + 1) % N
-        t2 = tt * tt
-        t3 = t2 * tt
-        a0 = 2 * t3 - 3 * t2 + 1
-        b0 = (t3 - 2 * t2 + tt) * hp
-        a1 = -2 * t3 + 3 * t2
-        b1 = (t3 - t2) * hp
-        da0 = (6 * t2 - 6 * tt) / hp
-        db0 = 3 * t2 - 4 * tt + 1
-        da1 = (-6 * t2 + 6 * tt) / hp
-        db1 = 3 * t2 - 2 * tt
+        j, j1, a0, b0, a1, b1, da0, db0, da1, db1 = _hermite_weights(psi[i], period, N)
         k = 0
         for r in range(n):
             for c in range(r, n):

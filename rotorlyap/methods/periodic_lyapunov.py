@@ -147,6 +147,21 @@ def _symmetric(X: np.ndarray) -> np.ndarray:
 
 
 @jit
+def _hermite_weights(psi, period, N):
+    """The grid interval ``(j, j + 1 mod N)`` of the azimuth ``psi`` on ``N`` nodes over
+    ``period`` and the weights of ``P_j, D_j, P_j+1, D_j+1`` in the cubic Hermite interpolant
+    (``a0, b0, a1, b1``) and in its derivative (``da0, db0, da1, db1``)."""
+    h = period / N
+    u = (psi % period) / h
+    j = min(int(math.floor(u)), N - 1)
+    t = u - j
+    t2 = t * t
+    t3 = t2 * t
+    return (j, (j + 1) % N, 2 * t3 - 3 * t2 + 1, (t3 - 2 * t2 + t) * h, -2 * t3 + 3 * t2, (t3 - t2) * h,
+            (6 * t2 - 6 * t) / h, 3 * t2 - 4 * t + 1, (-6 * t2 + 6 * t) / h, 3 * t2 - 2 * t)
+
+
+@jit
 def _hermite_forms(psi, x, xdot, P_grid, D_grid, period, with_rate, w, dw):
     """``w = x^T P x`` and (``with_rate``) ``dw = x^T P' x + 2 x^T P xdot`` with ``P`` the
     periodic cubic Hermite interpolant of :func:`_hermite` of the *symmetric* grids ``P_grid``
@@ -154,22 +169,8 @@ def _hermite_forms(psi, x, xdot, P_grid, D_grid, period, with_rate, w, dw):
     only)."""
     N = P_grid.shape[0]
     n = x.shape[1]
-    h = period / N
     for i in range(x.shape[0]):
-        u = (psi[i] % period) / h
-        j = min(int(math.floor(u)), N - 1)
-        t = u - j
-        j1 = (j + 1) % N
-        t2 = t * t
-        t3 = t2 * t
-        a0 = 2 * t3 - 3 * t2 + 1
-        b0 = (t3 - 2 * t2 + t) * h
-        a1 = -2 * t3 + 3 * t2
-        b1 = (t3 - t2) * h
-        da0 = (6 * t2 - 6 * t) / h
-        db0 = 3 * t2 - 4 * t + 1
-        da1 = (-6 * t2 + 6 * t) / h
-        db1 = 3 * t2 - 2 * t
+        j, j1, a0, b0, a1, b1, da0, db0, da1, db1 = _hermite_weights(psi[i], period, N)
         acc = 0.0
         acc_d = 0.0
         for r in range(n):
