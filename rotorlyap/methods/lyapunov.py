@@ -728,6 +728,11 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     cap may hold its maximum), then polishes them with ``t`` free too. With ``per_psi``: one
     search per azimuth over the whole band, the azimuth fixed.
 
+    Where ``W`` and ``dW`` are bound methods of one object with a ``ray_rate`` method (a
+    :class:`rotorlyap.analysis.functions.QuadraticFunction` about a tabulated motion) and
+    ``w_matrix`` is given, the map from search coordinates to the band's points and ``W'``
+    there run in one compiled call of it: the same numbers, counted as here.
+
     Parameters
     ----------
     f, W, dW : callable
@@ -782,11 +787,6 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
         ``f``, ``W`` and ``W'`` do not depend on ``psi`` to the last bit: the same search and
         the same answer, with the work of every azimuth but one skipped
         (:class:`rotorlyap.methods.sampling.PsiFree`).
-
-    Where ``W`` and ``dW`` are bound methods of one object with a ``ray_rate`` method (a
-    :class:`rotorlyap.analysis.functions.QuadraticFunction` about a tabulated motion) and
-    ``w_matrix`` is given, the map from search coordinates to the band's points and ``W'``
-    there run in one compiled call of it: the same numbers, counted as here.
 
     Returns
     -------

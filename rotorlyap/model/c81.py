@@ -61,7 +61,7 @@ line, the field (columns) or word, and what is allowed.
 Writing (:func:`write_c81`): the standard fixed layout, names left-aligned in 30 columns,
 counts as ``%2d``, every number in 7 columns with as many decimals as fit, at most 4: 4
 decimals on -10 < v < 100, 3 on -100 < v <= -10 and 100 <= v < 1000, 2 below -100. So Mach
-numbers and coefficients (|v| < 10) are rounded by at most 5e-5, angles by at most 0.005 deg
+numbers and coefficients (``|v| < 10``) are rounded by at most 5e-5, angles by at most 0.005 deg
 (``-180.00``, ``-97.800``, ``12.5000``, ``180.000``). A number that fills its 7 columns (a
 negative one of magnitude 1 or more, one of 10 or more) touches the previous value: valid
 C81, but readers that split lines on blanks (e.g. [c81utils]) cannot read such rows.
