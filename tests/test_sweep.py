@@ -121,6 +121,20 @@ def test_the_default_number_of_workers_follows_rotorlyap_workers(monkeypatch):
     assert available_cores() >= 1
 
 
+def test_the_processes_of_a_chapter_are_at_most_one_per_item_and_zero_is_refused():
+    """worker_count: the requested workers, at most one per item and at least one; workers < 1
+    refused with what is allowed (a chapter's cells never run silently in zero processes)."""
+    from rotorlyap.analysis.sweep import worker_count
+    from rotorlyap.figures import flight
+
+    assert worker_count(8, 3) == 3 and worker_count(2, 0) == 1 and worker_count(1, 50) == 1
+    for bad in (0, -2):
+        with pytest.raises(ValueError, match="workers must be >= 1"):
+            worker_count(bad, 5)
+    with pytest.raises(ValueError, match="workers must be >= 1"):
+        flight.verdict_data(cases=("backward",), mu_values=(0.0,), n_psi=8, workers=0)
+
+
 @pytest.mark.slow
 def test_local_dask_cluster_equals_serial(request):
     """scheduler='local' (a dask.distributed LocalCluster of 2 single-threaded worker processes) gives

@@ -61,7 +61,8 @@ from ..model.parameters import CG_POSITIONS, BladeParameters
 from .certify import FUNCTIONS, Certificate, certify
 
 __all__ = ["DASK_INSTALL", "GRID_SETTINGS", "RESULT_COLUMNS", "WORKER_ENVIRONMENT", "WORKERS_VARIABLE", "SweepResult",
-           "available_cores", "evaluate_point", "grid_names", "grid_value_type", "process_map", "sweep", "sweep_fields"]
+           "available_cores", "evaluate_point", "grid_names", "grid_value_type", "process_map", "sweep", "sweep_fields",
+           "worker_count"]
 
 DASK_INSTALL: str = 'pip install "dask[distributed]"'
 """The install line of the optional Dask dependency (``scheduler=``)."""
@@ -449,6 +450,15 @@ def available_cores() -> int:
     if hasattr(os, "sched_getaffinity"):
         return len(os.sched_getaffinity(0)) or 1
     return os.cpu_count() or 1
+
+
+def worker_count(workers: int | None, n_items: int) -> int:
+    """The number of processes for ``n_items`` independent items: ``workers`` (default
+    :func:`available_cores`), at most one per item, at least 1. A ``workers`` below 1 is refused."""
+    n = available_cores() if workers is None else int(workers)
+    if n < 1:
+        raise ValueError(f"workers must be >= 1 (None: every core), got {workers}")
+    return max(1, min(n, n_items))
 
 
 def _run_serial(tasks: list[tuple], progress: Callable[[int, int], None]) -> list[tuple]:

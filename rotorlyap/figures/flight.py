@@ -26,7 +26,7 @@ import numpy as np
 from ..analysis.floquet import blade_floquet
 from ..analysis.functions import quadratic_function
 from ..analysis.stability import blade_stability
-from ..analysis.sweep import available_cores, process_map
+from ..analysis.sweep import process_map, worker_count
 from ..conventions import PAPER_TEST_DISTURBANCES, TWO_PI
 from ..errors import NotAsymptoticallyStableError, TrimError
 from ..model.blade import Blade
@@ -1024,7 +1024,7 @@ def forensic_data(combinations=None, cases=CASES, mu_values=MU_FORENSIC, n_psi: 
         raise ValueError("mu_values must start with 0 (hover)")
     combinations = tuple(combinations)
     tasks = [(combinations, case, mu_values, n_psi) for case in cases]
-    workers = min(available_cores() if workers is None else int(workers), len(tasks))
+    workers = worker_count(workers, len(tasks))
     per_case = process_map(_forensic_case, tasks, workers) if workers > 1 else [_forensic_case(t) for t in tasks]
     rows, hover, first_mu, first_side, last_side, match = [], [], [], [], [], []
     for k, choice in enumerate(combinations):
@@ -1107,7 +1107,7 @@ def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candida
                 tr = trims[(case, float(mu))]
                 tasks.append((tr.params, float(mu), steadies[(case, float(mu))], n_psi, function, reading))
                 where.append((c, i, j))
-    workers = min(available_cores() if workers is None else int(workers), len(tasks))
+    workers = worker_count(workers, len(tasks))
     outcomes = (process_map(_verdict_cell, tasks, workers, cost=_verdict_cost) if workers > 1
                 else [_verdict_cell(t) for t in tasks])
     msgs = [[[None] * mu_values.size for _ in cases] for _ in candidates]

@@ -1119,7 +1119,7 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
     each, the longest cells first); ``workers=1`` runs them here, one after the other. Each
     cell's result does not depend on where it ran.
     """
-    from ..analysis.sweep import available_cores, process_map
+    from ..analysis.sweep import process_map, worker_count
 
     cases = motions.cases if cases is None else tuple(cases)
     mu_values = np.asarray(mu_values, dtype=float)
@@ -1162,7 +1162,7 @@ def scan_data(motions: SteadyMotions, *, candidates=CANDIDATES, cases=None, mu_v
                         continue
                 tasks.append((cand.function, cand.reading, case, mu, steady, Q, A, n_psi, engine_options))
                 where.append((c, i, j))
-    workers = min(available_cores() if workers is None else int(workers), max(len(tasks), 1))
+    workers = worker_count(workers, len(tasks))
     outcomes = (process_map(_scan_cell, tasks, workers, cost=_scan_cost) if workers > 1
                 else [_scan_cell(t) for t in tasks])
     results, psi = {}, 2 * np.pi * np.arange(n_psi) / n_psi
@@ -1525,14 +1525,14 @@ def search_check(scan: ScanData, motions: SteadyMotions, *, case: str = "forward
     each local ascent, on the scan's azimuths and function (:func:`cell_system`). The reruns are
     independent: in ``workers`` fresh processes (default: every core; 1: here), the same numbers
     either way (:func:`rotorlyap.analysis.sweep.process_map`)."""
-    from ..analysis.sweep import available_cores, process_map
+    from ..analysis.sweep import process_map, worker_count
 
     runs = ({"n_sphere": n_sphere}, {"n_iter": n_iter})
     A, lam, n = (np.zeros((len(checks), 1 + len(runs))) for _ in range(3))
     cells = {(key, case, round(float(mu), 6)) for mu, key in checks}
     small = replace(scan, results={k: v for k, v in scan.results.items() if k in cells})  # what the reruns need
     tasks = [(small, motions, key, case, float(mu), opts) for mu, key in checks for opts in runs]
-    workers = min(available_cores() if workers is None else int(workers), len(tasks))
+    workers = worker_count(workers, len(tasks))
     rows = process_map(_finer_search, tasks, workers) if workers > 1 else [_finer_search(t) for t in tasks]
     for k, (mu, key) in enumerate(checks):
         for col, row in enumerate([_search_row(scan.result(key, case, mu))]  # the reruns checked it exists
