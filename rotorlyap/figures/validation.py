@@ -253,8 +253,23 @@ class SteadyMotions:
         }
 
 
+def _steady_motion(task: tuple):
+    """One motion of :func:`steady_motions` (module level, for worker processes): ``(case, mu,
+    n_points, n_table)`` -> ``(tabulated motion, harmonics in deg)``, or the message of a
+    :class:`~rotorlyap.errors.PeriodicMotionError`."""
+    case, mu, n_points, n_table = task
+    p = BladeParameters.table_i(case)
+    try:
+        pm = periodic_motion(p, mu)
+        if mu > 0 and n_points != 64:
+            pm = periodic_motion(p, mu, n_points=n_points)
+    except PeriodicMotionError as exc:
+        return str(exc)
+    return tabulate_motion(pm, n_table), pm.harmonics_deg
+
+
 def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_table: int = 4096,
-                   n_plot: int = 73) -> SteadyMotions:
+                   n_plot: int = 73, workers: int | None = None) -> SteadyMotions:
     """Periodic motions of every case at every advance ratio (failures recorded, not raised).
 
     Each motion is first sought with the default 64 collocation points (a quick test of
@@ -265,7 +280,16 @@ def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_
     (:func:`rotorlyap.model.steady.tabulate_motion`, ``n_table`` azimuths) for fast
     evaluation. :attr:`SteadyMotions.residual` is the largest scaled residual on 4001
     azimuths: the size of ``f(psi, 0)``, the part of ``W'`` linear in ``x``.
+
+    The motions are independent: with ``workers`` other than 1 (default: every core) they are
+    computed in that many fresh processes, each with one BLAS thread
+    (:func:`rotorlyap.analysis.sweep.process_map`), so that their last bits, and what the
+    searches about them find, do not depend on this process's BLAS threads (a motion's dense
+    collocation solve rounds differently with two threads, and step 3's bound at mu = 0.25
+    moved in the third digit).
     """
+    from ..analysis.sweep import process_map, worker_count
+
     mu_values = np.asarray(mu_values, dtype=float)
     k, m = len(cases), mu_values.size
     psi = np.linspace(0.0, 2 * np.pi, n_plot)
@@ -277,25 +301,24 @@ def steady_motions(cases=CASES, mu_values=MU_FLOQUET, *, n_points: int = 256, n_
     ang = np.full((k, m, n_plot, 3), np.nan)
     hov = np.zeros((k, 3))
     msgs, motions = [], {}
+    tasks = [(case, float(mu), n_points, n_table) for case in cases for mu in mu_values]
+    workers = worker_count(workers, len(tasks))
+    done = process_map(_steady_motion, tasks, workers) if workers > 1 else [_steady_motion(t) for t in tasks]
     for i, case in enumerate(cases):
         p = BladeParameters.table_i(case)
         xh = Blade(p, 0.0).equilibrium()
         hov[i] = np.degrees(xh[:3])
         row = []
         for j, mu in enumerate(mu_values):
-            try:
-                pm = periodic_motion(p, float(mu))
-                if mu > 0 and n_points != 64:
-                    pm = periodic_motion(p, float(mu), n_points=n_points)
-            except PeriodicMotionError as exc:
-                row.append(str(exc))
+            out = done[i * m + j]
+            if isinstance(out, str):
+                row.append(out)
                 continue
             row.append("")
-            tab = tabulate_motion(pm, n_table)
+            tab, harm[i, j] = out
             motions[(case, round(float(mu), 6))] = tab
             found[i, j] = True
             dist[i, j] = max_distance(tab, xh)
-            harm[i, j] = pm.harmonics_deg
             blade = Blade(p, float(mu))
             res[i, j] = float(scaled_norm(blade.rhs(fine, tab.xi(fine)) - tab.dxi(fine), DEFAULT_SCALES).max())
             ang[i, j] = np.degrees(tab.xi(psi)[:, :3])
