@@ -587,7 +587,7 @@ def sweep_grid(args) -> dict[str, list]:
 
 
 def _sweep(args) -> int:
-    from .analysis.sweep import available_cores, sweep
+    from .analysis.sweep import sweep, worker_count
 
     params, case = _blade(args.params, args.cg_base)
     grid = sweep_grid(args)
@@ -597,7 +597,7 @@ def _sweep(args) -> int:
     elif args.workers == 1 or n == 1:
         where = "this process"
     else:
-        where = f"{min(args.workers or available_cores(), n)} processes"
+        where = f"{worker_count(args.workers, n)} processes"
     print(f"sweeping: {case['params']}, {n} point{'s' if n != 1 else ''} on {where} ...", file=sys.stderr, flush=True)
     result = sweep(params, grid, n_psi=args.n_psi, workers=args.workers, scheduler=args.scheduler,
                    function=args.function, progress=progress_bar(sys.stderr), n_sphere=args.n_sphere)

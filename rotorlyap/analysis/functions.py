@@ -550,10 +550,8 @@ class QuadraticFunction:
         """``W' = x^T P' x + 2 x^T P f(psi, x)`` with the full nonlinear ``f``, shape ``(m,)``."""
         x = np.atleast_2d(np.asarray(x, dtype=float))
         psi = np.broadcast_to(np.asarray(psi, dtype=float), x.shape[:1])
-        fused = self._fused() if x.shape[0] < PARALLEL_MIN_STATES or threads() < 2 else None
+        fused = self._fused_for(psi, x.shape[0])
         if fused is not None:  # the same numbers in one compiled call (rotorlyap.analysis.fused)
-            if not np.all(np.isfinite(psi)):
-                raise ValueError("psi must be finite")
             return quadratic_rate_about_tabulated(psi, x, self.scales, *fused)
         y = x / self.scales
         fy = self.f(psi, x) / self.scales
@@ -568,15 +566,24 @@ class QuadraticFunction:
         where that call does not apply (as :meth:`dW`'s fused call, and batches that
         :meth:`dW` gives to the parallel kernels), and the search maps ``y`` itself."""
         y = np.asarray(y, dtype=float)
-        if y.ndim != 2 or y.shape[1] != 6 or not (y.shape[0] < PARALLEL_MIN_STATES or threads() < 2):
-            return None
-        fused = self._fused()
-        if fused is None:
+        if y.ndim != 2 or y.shape[1] != 6:
             return None
         psi = np.broadcast_to(np.asarray(psi, dtype=float), y.shape[:1])
-        if not np.all(np.isfinite(psi)):
-            raise ValueError("psi must be finite")
+        fused = self._fused_for(psi, y.shape[0])
+        if fused is None:
+            return None
         return quadratic_rate_on_rays(psi, y, level, bound, scales, self.scales, *fused)
+
+    def _fused_for(self, psi: np.ndarray, m: int):
+        """:meth:`_fused` for a batch of ``m`` states at azimuths ``psi`` (refused unless finite),
+        or None for batches that go to the parallel kernels (``m >= PARALLEL_MIN_STATES`` with
+        two threads or more)."""
+        if not (m < PARALLEL_MIN_STATES or threads() < 2):
+            return None
+        fused = self._fused()
+        if fused is not None and not np.all(np.isfinite(psi)):
+            raise ValueError("psi must be finite")
+        return fused
 
     def _fused(self):
         """The arguments of :func:`rotorlyap.analysis.fused.quadratic_rate_about_tabulated`

@@ -492,9 +492,7 @@ def process_map(fn: Callable[[Any], Any], items: Sequence[Any], workers: int | N
     are submitted by decreasing cost (in order among equal costs). ``workers`` defaults to
     :func:`available_cores`; ``progress(done, total)`` is called as results arrive.
     """
-    workers = available_cores() if workers is None else int(workers)
-    if workers < 1:
-        raise ValueError(f"workers must be >= 1, got {workers}")
+    workers = worker_count(workers, len(items))
     if cost is not None:
         order = sorted(range(len(items)), key=lambda k: -cost(items[k]))
         done = process_map(fn, [items[k] for k in order], workers, progress)
@@ -539,7 +537,7 @@ def _run_dask(tasks: list[tuple], scheduler: str, workers: int | None,
     if scheduler != "local":
         with distributed.Client(scheduler) as client:
             return _gather_dask(distributed, client, tasks, progress)
-    n = min(workers or available_cores(), len(tasks))
+    n = worker_count(workers, len(tasks))
     with _environment(WORKER_ENVIRONMENT):
         with distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                       dashboard_address=None) as cluster, distributed.Client(cluster) as client:
@@ -648,7 +646,7 @@ def sweep(params: BladeParameters, grid: Mapping[str, Sequence[Any] | Any], *, n
     if scheduler is not None:
         results = _run_dask(tasks, scheduler, workers, progress)
     else:
-        n = min(workers or available_cores(), len(tasks))
+        n = worker_count(workers, len(tasks))
         results = _run_serial(tasks, progress) if n == 1 else _run_processes(tasks, n, progress)
     rows = tuple(tuple(v for _, v in point) + tuple(r) for point, r in zip(points, results))
     return SweepResult(columns=tuple(axes) + RESULT_COLUMNS, rows=rows)
