@@ -41,6 +41,22 @@ def test_a_positive_quadratic_form_is_maximised_on_the_sphere_by_its_largest_eig
     assert np.all(psi == 0.0)
 
 
+def test_a_polish_told_to_stop_above_a_value_stops_there_and_otherwise_runs_in_full():
+    """stop_above (a band search deciding "max <= stop" only): below lambda_max(S) the polish
+    returns a value above the threshold that the form takes at the point returned; above it the
+    threshold is never reached and the polish is the full one to the last bit."""
+    rng = np.random.default_rng(RNG_SEED)
+    S, fun = _quadratic_form(6, rng)
+    start = _starts(fun, 32, 6, rng, psi=0.0)
+    full = polish(fun, start, free_psi=False)
+    lam = np.linalg.eigvalsh(S)[-1]
+    stop = start.value.max() + 0.5 * (lam - start.value.max())
+    value, psi, y = polish(fun, start, free_psi=False, stop_above=stop)
+    assert value.max() > stop and np.array_equal(value, fun(psi, y))
+    above = polish(fun, start, free_psi=False, stop_above=lam * (1 + 1e-6))
+    assert all(np.array_equal(a, b) for a, b in zip(above, full))
+
+
 def test_an_interior_maximum_in_the_ray_parameter_and_the_azimuth_is_found():
     """f = cos(psi - 1) - 4 (t - 0.3)^2 + (u . e)^2 with t = |y|: the maximum 2 at psi = 1,
     t = 0.3, u = +-e, none of the bounds active."""

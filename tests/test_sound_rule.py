@@ -97,6 +97,27 @@ def test_band_search_finds_the_closed_form_maximum_of_pulsed_growth():
     assert ext.x[0, 0] ** 2 == pytest.approx(a / (2 * k), rel=1e-4)
 
 
+def test_an_early_stopped_band_search_gives_the_full_searchs_verdict():
+    """stop_above (the sound rule asks only whether max W' <= -margin): on pulsed_growth, for
+    thresholds below and above its largest W' on the band (closed form above), the stopped
+    search reports a value above the threshold exactly where the full search does; that value is
+    W' at the point it returns and no more than the full maximum; above the maximum the stopped
+    search is the full one to the last bit."""
+    from rotorlyap.methods.lyapunov import band_max_dw
+
+    s = pulsed_growth()
+    alpha, psi = np.exp(-4.0), np.arange(24) * np.pi / 12
+    full = band_max_dw(s.f, s.W, s.dW, alpha, 1.0, scales=[1.0], psi=psi)
+    top = float(full.value[0])
+    for stop in (-1.0, 0.0, 0.5 * top, 0.999 * top, 1.001 * top, 2.0 * top):
+        ext = band_max_dw(s.f, s.W, s.dW, alpha, 1.0, scales=[1.0], psi=psi, stop_above=stop)
+        assert (ext.value[0] > stop) == (top > stop)
+        assert ext.value[0] <= top
+        assert ext.value[0] == pytest.approx(float(s.dW(ext.psi, ext.x)[0]), rel=1e-12)
+        if top <= stop:
+            assert all(np.array_equal(getattr(ext, k), getattr(full, k)) for k in ("value", "psi", "x"))
+
+
 def test_sphere_extremum_keeps_the_best_candidates_in_order():
     """keep=k returns the k best refined candidates, best first."""
     from rotorlyap.methods.sampling import sphere_extremum, unit_sphere_points

@@ -1489,33 +1489,54 @@ class RuleChanges:
                 "ch7_rule_gained": int(((self.n_sound > 0) & (self.n_paper == 0)).sum())}
 
 
-def rule_changes(scan: ScanData, motions: SteadyMotions, *, keys=("quadratic", "quadratic-opt")) -> RuleChanges:
+def _paper_rule_cell(task: tuple):
+    """One rerun of :func:`rule_changes` (module level, for worker processes): ``(scan, motions,
+    key, case, mu)`` -> ``(paper, sound)``, each ``(stable azimuths, A, min lambda0)``: the cell's
+    :func:`technical_stability` with the paper's rule beside the scan's own result; None where
+    the scan has no result for the cell."""
+    scan, motions, key, case, mu = task
+    try:
+        cell = cell_system(scan, motions, key, case, mu)
+    except KeyError:
+        return None
+    r_s, fun = cell.result, cell.function
+    r_p = technical_stability(cell.f, fun.W, r_s.A_requested, scales=r_s.scales, dW=fun.dW,
+                              rule="paper", psi_free=cell.psi_free,
+                              **{**SCAN_OPTIONS, "n_psi": r_s.psi.size})
+    return tuple((int(r.stable.sum()), r.A, r.lambda0[r.stable].min() if r.stable.any() else 0.0)
+                 for r in (r_p, r_s))
+
+
+def rule_changes(scan: ScanData, motions: SteadyMotions, *, keys=("quadratic", "quadratic-opt"),
+                 workers: int | None = None) -> RuleChanges:
     """Rerun the scan's cells of ``keys`` (strict candidates, every case and advance ratio) with the
     paper's rule, on the same functions (:func:`cell_system`), azimuths and search options
-    (:data:`SCAN_OPTIONS`), and set the verdicts beside the scan's (the sound rule)."""
+    (:data:`SCAN_OPTIONS`), and set the verdicts beside the scan's (the sound rule). The reruns
+    are independent: in ``workers`` fresh processes (default: every core; 1: here), the same
+    numbers either way (:func:`rotorlyap.analysis.sweep.process_map`)."""
+    from ..analysis.sweep import process_map, worker_count
+
     labels, shape = [], (len(keys) * len(scan.cases), scan.mu_values.size)
     n_p, n_s = np.full(shape, -1), np.full(shape, -1)
     A_p, A_s = np.full(shape, np.nan), np.full(shape, np.nan)
     l_p, l_s = np.zeros(shape), np.zeros(shape)
-    row = 0
+    tasks, where = [], []
+    small = replace(scan, results={k: v for k, v in scan.results.items() if k[0] in keys})  # what the reruns need
     for key in keys:
         for case in scan.cases:
             labels.append(f"{scan.labels[scan.keys.index(key)].split(',')[0]}"
                           f"{', optimised' if key == 'quadratic-opt' else ''}, {case} C.G.")
             for j, mu in enumerate(scan.mu_values):
-                try:
-                    cell = cell_system(scan, motions, key, case, float(mu))
-                except KeyError:
-                    continue
-                r_s, fun = cell.result, cell.function
-                r_p = technical_stability(cell.f, fun.W, r_s.A_requested, scales=r_s.scales, dW=fun.dW,
-                                          rule="paper", psi_free=cell.psi_free,
-                                          **{**SCAN_OPTIONS, "n_psi": r_s.psi.size})
-                for r, n, A, lam in ((r_p, n_p, A_p, l_p), (r_s, n_s, A_s, l_s)):
-                    n[row, j] = int(r.stable.sum())
-                    A[row, j] = r.A
-                    lam[row, j] = r.lambda0[r.stable].min() if r.stable.any() else 0.0
-            row += 1
+                tasks.append((small, motions, key, case, float(mu)))
+                where.append((len(labels) - 1, j))
+    workers = worker_count(workers, len(tasks))
+    rows = (process_map(_paper_rule_cell, tasks, workers, cost=lambda t: t[4]) if workers > 1
+            else [_paper_rule_cell(t) for t in tasks])
+    for (row, j), got in zip(where, rows):
+        if got is None:
+            continue
+        for (count, A_r, lam_r), n, A, lam in zip(got, (n_p, n_s), (A_p, A_s), (l_p, l_s)):
+            n[row, j], A[row, j], lam[row, j] = count, A_r, lam_r
     return RuleChanges(labels=tuple(labels), mu_values=np.asarray(scan.mu_values, dtype=float),
                        n_paper=n_p, n_sound=n_s, A_paper=A_p, A_sound=A_s, lambda0_paper=l_p,
                        lambda0_sound=l_s, n_psi=int(scan.psi.size))

@@ -752,7 +752,9 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     n_sphere, n_levels, n_refine, n_iter, seed :
         Resolution of the search (as :func:`technical_stability`); ``n_levels`` values of ``t``.
     stop_above : float, optional
-        Return as soon as a sample exceeds it (not with ``per_psi``).
+        Return as soon as a value found exceeds it (a sample, a candidate of a local search, a
+        point of the azimuth sweep; not with ``per_psi``): then the value returned is a lower
+        bound of the maximum, enough to decide that ``max W' <= stop_above`` fails.
     directions : array_like, optional
         Unit directions to sample instead of ``unit_sphere_points(n, n_sphere, seed)``.
     n_polish : int
@@ -845,11 +847,13 @@ def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: floa
     if not per_psi and ext.value.size > n_lbfgs:  # the batched ascent refined them all;
         top = np.argsort(-ext.value)[:n_lbfgs]    # quasi-Newton for the best of those
         ext = Extremum(ext.value[top], ext.psi[top], ext.x[top])
-    value, p_best, y_best = polish(g, ext, free_psi=not (per_psi or autonomous))
+    value, p_best, y_best = polish(g, ext, free_psi=not (per_psi or autonomous),
+                                   stop_above=None if per_psi else stop_above)
     if per_psi:
         return Extremum(value, p_best, state(p_best, y_best))
-    if n_sweep > 0 and not autonomous:
-        value, p_best, y_best = _sweep_azimuth(g, value, p_best, y_best, period, int(n_sweep))
+    if n_sweep > 0 and not autonomous and not (stop_above is not None and value.max() > stop_above):
+        value, p_best, y_best = _sweep_azimuth(g, value, p_best, y_best, period, int(n_sweep),
+                                               stop_above=stop_above)
     i = int(np.argmax(value))
     return Extremum(value[i:i + 1], p_best[i:i + 1], state(p_best[i:i + 1], y_best[i:i + 1]))
 
@@ -884,11 +888,12 @@ class _RayRate:
 
 
 def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_keep: int = 16,
-                   n_candidates: int = 256):
+                   n_candidates: int = 256, stop_above: float | None = None):
     """Each candidate ``(psi_i, y_i)`` evaluated at ``n_sweep`` azimuths of the period with its
     ``y`` kept (all candidates in blocks of one vectorised call); the best ``n_keep`` new
     points polished (:func:`rotorlyap.methods.polish.polish`) with the azimuth free. Returns (values, psi, y) of the
-    candidates, each never worse than before."""
+    candidates, each never worse than before. With ``stop_above``: where the sweep finds a value
+    above it, those points are returned without the polish (:func:`band_max_dw`'s early stop)."""
     grid = period * np.arange(n_sweep) / n_sweep
     value, psi, y = value.copy(), psi.copy(), y.copy()
     new_v, new_p = np.full(value.size, -np.inf), np.zeros(value.size)
@@ -909,7 +914,10 @@ def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_
     best = np.argsort(-new_v)[:n_keep]
     best = best[new_v[best] > -np.inf]
     start = Extremum(new_v[best], new_p[best], y[best])
-    v2, p2, y2 = polish(fun, start, free_psi=True)
+    if stop_above is not None and start.value.size and start.value.max() > stop_above:
+        v2, p2, y2 = start.value, start.psi, start.x
+    else:
+        v2, p2, y2 = polish(fun, start, free_psi=True, stop_above=stop_above)
     better = v2 > value[best]
     value[best[better]], psi[best[better]], y[best[better]] = v2[better], p2[better], y2[better]
     return value, psi, y
@@ -989,6 +997,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
 
     # a second set of directions for the final check: another scrambling, as many points
     dirs_2 = unit_sphere_points(n, max(dirs.shape[0] - 2 * n * n, 16), 1)
+    failed_first = [0]  # the thorough check's search that failed last (passes)
 
     def passes(r: float, thorough: bool = False):
         """(h) on the band of radius r: a search over the period with the azimuth free, then,
@@ -1000,15 +1009,23 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         need = -margin * w_size(r)
         if not alpha > 0:
             return False, alpha, np.inf, need
-        worst = float(band(r, alpha, stop=need).value[0])
-        if worst <= need:
-            worst = max(worst, float(band(r, alpha, stop=None, per_psi=True).value.max()))
-        if thorough and worst <= need:
-            for starts, d in (("band", dirs), ("levels", dirs_2), ("band", dirs_2)):
-                worst = max(worst, float(band(r, alpha, stop=need, starts=starts, directions=d,
-                                              n_lbfgs=256).value[0]))
-                if worst > need:
-                    break
+        searches = [lambda: band(r, alpha, stop=need).value[0],
+                    lambda: band(r, alpha, stop=None, per_psi=True).value.max()]
+        if thorough:
+            searches += [lambda starts=starts, d=d: band(r, alpha, stop=need, starts=starts, directions=d,
+                                                         n_lbfgs=256).value[0]
+                         for starts, d in (("band", dirs), ("levels", dirs_2), ("band", dirs_2))]
+        # the thorough check runs first the search that failed its last radius: the verdict, and
+        # where it passes the worst W' (the largest of every search's), do not depend on the order
+        first = failed_first[0] if thorough else 0
+        worst = -np.inf
+        for k in [first] + [k for k in range(len(searches)) if k != first]:
+            value = float(searches[k]())
+            worst = value if not value <= worst else worst  # a NaN is kept, and fails
+            if not worst <= need:
+                if thorough:
+                    failed_first[0] = k
+                break
         return bool(worst <= need), alpha, worst, need
 
     # W' on the sphere itself (a part of the band): the paper's step 3 bounds A from above

@@ -73,7 +73,7 @@ class _Unpack:
 
 def ascend(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], z0: np.ndarray, lower: np.ndarray,
            upper: np.ndarray, *, maxiter: int = 100, ftol: float = _FTOL, gtol: float = _GTOL,
-           ) -> tuple[np.ndarray, np.ndarray]:
+           stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Local maxima of ``fun(Z, rows)`` from every row of ``z0`` at once, within the bounds.
 
     The core of :func:`polish`: a projected quasi-Newton ascent of each start (its own BFGS
@@ -97,6 +97,9 @@ def ascend(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], z0: np.ndarray, 
         A start stops when an iteration changes its value by at most ``ftol`` relative (to
         ``max(|f|, 1)``), when its largest projected gradient component is at most ``gtol``, or
         when no step along its direction increases the value.
+    stop_above : float, optional
+        Stop every start after the first iteration at whose end one of them has a value above
+        it (enough to decide that a condition ``max <= stop_above`` fails).
 
     Returns
     -------
@@ -126,7 +129,7 @@ def ascend(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], z0: np.ndarray, 
     eye = np.eye(d)[None]
     for _ in range(maxiter):
         idx = np.flatnonzero(active)
-        if idx.size == 0:
+        if idx.size == 0 or (stop_above is not None and np.any(-F > stop_above)):
             break
         zi, Fi, Gi, Hi = z[idx], F[idx], G[idx], Hinv[idx]
         lo, hi = lower[idx], upper[idx]
@@ -203,7 +206,7 @@ def ascend(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], z0: np.ndarray, 
 
 
 def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_psi: bool,
-           maxiter: int = 100) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+           maxiter: int = 100, stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Local maximisation of ``fun(psi, y)`` from every start of ``start`` at once.
 
     The variables of each start: ``v`` (the direction ``v / |v|``, free in ``R^n``), ``t`` in
@@ -220,6 +223,8 @@ def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_p
         Let the azimuth move too.
     maxiter : int
         Largest number of iterations of each start.
+    stop_above : float, optional
+        Stop every start as soon as one has a value above it (:func:`ascend`).
 
     Returns
     -------
@@ -252,7 +257,7 @@ def polish(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], start, *, free_p
             fun.skip(int(extra[rows].sum()))
         return out
 
-    F, z = ascend(evaluate, z0, lower, upper, maxiter=maxiter)
+    F, z = ascend(evaluate, z0, lower, upper, maxiter=maxiter, stop_above=stop_above)
     p_best, y_best = unpack(z, np.arange(valid.size))
     if copies is not None:  # back to every start (the azimuth of each its own: it did not move)
         F, y_best, valid = F[copies], y_best[copies], everyone

@@ -171,6 +171,7 @@ def refine_extremum(
     initial_step: float = 0.2,
     min_step: float = 1e-7,
     multiplicity: np.ndarray | None = None,
+    stop_above: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Batched local ascent of ``sign * fun(psi, rho * scales * u)`` over unit ``u``.
 
@@ -209,6 +210,10 @@ def refine_extremum(
     multiplicity : numpy.ndarray, optional
         With a :class:`PsiFree` ``fun``: how many identical starts (at other azimuths) each
         candidate stands for; their evaluations are credited to ``fun.skip``.
+    stop_above : float, optional
+        Only with ``sign = 1``: stop after the first iteration at whose end a candidate's value
+        exceeds it (enough to decide that a condition ``max <= stop_above`` fails; the
+        candidates are then where that iteration left them).
 
     Returns
     -------
@@ -243,7 +248,10 @@ def refine_extremum(
     # the perturbations of u, in the order (+h e_0, -h e_0, +h e_1, ...)
     offsets = np.array([s * h * eye[i] for i in range(n) for s in (1.0, -1.0)])[:, None, :]
     n_var = n + int(free_psi) + int(free_rho)
+    stop = stop_above if stop_above is not None and sign > 0 else None
     for _ in range(n_iter):
+        if stop is not None and val.max() > stop:
+            break
         act = np.flatnonzero(step > min_step)
         if act.size == 0:
             break
@@ -352,9 +360,9 @@ def sphere_extremum(
     n_iter : int
         Iterations of the refinement.
     stop_above : float, optional
-        Only with ``kind="max"`` and ``per_psi=False``: return as soon as a sample exceeds
-        this value (the answer is then a lower bound of the max, enough to decide that a
-        condition ``max <= stop_above`` fails).
+        Only with ``kind="max"`` and ``per_psi=False``: return as soon as a sample, or a
+        candidate of the refinement, exceeds this value (the answer is then a lower bound of the
+        max, enough to decide that a condition ``max <= stop_above`` fails).
     keep : int
         Only with ``per_psi=False``: return the best ``keep`` refined candidates, best first
         (starts for a further local search), instead of the best one.
@@ -415,6 +423,7 @@ def sphere_extremum(
     il, idir = np.divmod(cols, nd)
     p0, r0, u0 = psi[rows], levels[rows, il], directions[idir]
     bounds = (lo[rows], hi[rows]) if shell is not None else None
+    refine_stop = stop_above if sign > 0 and not per_psi else None
     if n_iter > 0 and psi_free(fun):  # each distinct start refined once (its azimuth stays put)
         key = np.column_stack([r0, idir] + (list(bounds) if bounds is not None else []))
         _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
@@ -422,14 +431,14 @@ def sphere_extremum(
         val, _, r1, u1 = refine_extremum(
             fun, p0[first], r0[first], u0[first], scales, sign=sign, free_psi=free_psi,
             period=period, rho_bounds=None if bounds is None else (bounds[0][first], bounds[1][first]),
-            n_iter=n_iter, multiplicity=np.bincount(inverse),
+            n_iter=n_iter, multiplicity=np.bincount(inverse), stop_above=refine_stop,
         )
         val, r1, u1 = sign * val[inverse], r1[inverse], u1[inverse]
         p1 = np.mod(p0, period) if free_psi else p0
     elif n_iter > 0:
         val, p1, r1, u1 = refine_extremum(
             fun, p0, r0, u0, scales, sign=sign, free_psi=free_psi, period=period,
-            rho_bounds=bounds, n_iter=n_iter,
+            rho_bounds=bounds, n_iter=n_iter, stop_above=refine_stop,
         )
         val = sign * val
     else:
