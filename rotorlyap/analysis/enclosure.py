@@ -16,7 +16,9 @@ The same formulas as the compiled kernel (:mod:`rotorlyap.model.compiled`), in e
 * the strip loads: wind, angle of attack ``atan2(u_z, -u_y)`` on a branch continuous over each
   ball (the airfoil table is periodic in the angle, so any branch gives the same loads), the
   airfoil table as the periodic piecewise-linear interpolant of its node values on the grid
-  ``-pi + 2 pi k / n`` (:meth:`rotorlyap.model.airfoil.Airfoil.table_rows`; the float kernel
+  ``-pi + 2 pi k / n`` (:meth:`rotorlyap.model.airfoil.Airfoil.table_rows`, or the same rows of a
+  Mach-independent C81 table, :meth:`rotorlyap.model.c81.C81Section.table_rows`, whose grid holds
+  every angle of the table, so that every kink of the table is a node; the float kernel
   evaluates it to round-off), its slope over a ball the hull of the slopes of the segments the
   ball touches (the generalised derivative at a kink); the Prandtl-Glauert factor with its
   cap and Lock's drag rise for compressible sections;
@@ -336,7 +338,9 @@ class BladeEnclosure:
     Parameters
     ----------
     blade : rotorlyap.model.blade.Blade
-        The blade (advance ratio, controls); its airfoil must be tabulated (``table_size > 0``).
+        The blade (advance ratio, controls); its airfoil must be tabulated (``table_size > 0``):
+        an :class:`~rotorlyap.model.airfoil.Airfoil` or a Mach-independent
+        :class:`~rotorlyap.model.c81.C81Section`.
     steady : SteadyMotion, TabulatedMotion or anything ``as_steady_motion`` takes
         A constant state, or a :class:`~rotorlyap.model.steady.TabulatedMotion` (whose piecewise
         cubic interpolant is enclosed exactly).
@@ -349,7 +353,8 @@ class BladeEnclosure:
     Raises
     ------
     ValueError
-        An airfoil without a table, or a periodic steady motion that is not tabulated.
+        An airfoil without a table, a Mach-dependent C81 section (no Mach axis in the
+        enclosures), or a periodic steady motion that is not tabulated.
     """
 
     def __init__(self, blade, steady=None, arithmetic: str | None = None):
@@ -365,7 +370,13 @@ class BladeEnclosure:
                 self._init(blade, steady)
 
     def _init(self, blade, steady):
-        rows = getattr(blade.params.airfoil, "table_rows", lambda: None)()
+        airfoil = blade.params.airfoil
+        if getattr(airfoil, "mach_dependent", False) or blade.aero.compressibility.section_mach:
+            raise ValueError(f"the proof does not support the Mach-dependent section {airfoil.name!r} "
+                             "(compressibility = 'table'): the enclosures have no Mach axis. Supported: "
+                             "the package's tabulated sections and C81 tables with one Mach column "
+                             "(with compressibility 'none' or 'prandtl-glauert')")
+        rows = getattr(airfoil, "table_rows", lambda: None)()
         if rows is None:
             raise ValueError("the proof needs a tabulated airfoil (Airfoil with table_size > 0); "
                              f"{type(blade.params.airfoil).__name__} without a table is not supported")

@@ -185,7 +185,8 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
     Raises
     ------
     ValueError
-        A periodic steady motion that is not tabulated, an airfoil without a table.
+        A periodic steady motion that is not tabulated, an airfoil without a table, a Mach-dependent
+        C81 section (``compressibility = "table"``: no Mach axis in the enclosures).
     """
     system, quadratic, N = proof_problem(fun, n_intervals=n_intervals, n_coarse=n_coarse, arithmetic=arithmetic)
     with iv.arithmetic(system.enclosure.arithmetic):

@@ -21,7 +21,12 @@ With ``params.compressibility = "prandtl-glauert"`` the section coefficients are
 the section Mach number ``|w| / params.speed_of_sound`` (forward-flow lift, moment and
 pitch-damping couple times the Prandtl-Glauert factor, capped at M = 0.8; Lock's drag rise above
 Korn's critical Mach number): :mod:`rotorlyap.model.compressibility`. With ``"none"`` (default) the loads are the
-incompressible ones, bit for bit.
+incompressible ones, bit for bit. With ``"table"`` (a Mach-dependent C81 section,
+:class:`rotorlyap.model.c81.C81Section`) the section is read at its Mach number
+``|w| (1/params.speed_of_sound)`` (``coefficients(alpha, mach)``, bilinear in the angle and the Mach
+number) and nothing is applied on top: the table holds the section's compressibility; the
+pitch-damping couple takes no Mach factor. These loads run on the numpy path only (the compiled
+kernels have no Mach axis; :mod:`rotorlyap.model.compiled` falls back here).
 
 The induced inflow ``lambda_i(r, psi) = a(r) + b(r) cos psi`` comes from
 :func:`rotorlyap.model.inflow.induced_inflow`, sampled once at construction (its form is checked).
@@ -183,7 +188,11 @@ class StripAerodynamics:
         alpha = np.arctan2(u_z, -u_y)
         if self.params.twist != 0.0:
             alpha = alpha + self._phi
-        cl, cd, cm = self.params.airfoil.coefficients(alpha)
+        if self.compressibility.section_mach:
+            # the section's own Mach dependence (compressibility = "table"): no correction on top
+            cl, cd, cm = self.params.airfoil.coefficients(alpha, Vm * self.compressibility.inverse_speed_of_sound)
+        else:
+            cl, cd, cm = self.params.airfoil.coefficients(alpha)
         pg = None
         if self.compressibility.enabled:
             cl, cd, cm, pg = apply_to_coefficients(alpha, Vm, cl, cd, cm, self.compressibility)

@@ -122,7 +122,7 @@ import math
 import os
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -130,9 +130,11 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .airfoil import wrap_angle
+from .compressibility import THICKNESS_RATIO
 
 __all__ = [
     "DEFAULT_ALPHAS_DEG",
+    "GRID_SIZES",
     "NACA23012_C81",
     "NACA23012_C81_NAME",
     "C81Block",
@@ -736,6 +738,63 @@ def _interpolate(blk: C81Block, alpha: FloatArray, mach: FloatArray) -> FloatArr
     return v0 + s * (v1 - v0)
 
 
+#: Sizes of the uniform angle grid :class:`C81Section` tries, smallest first: steps of 0.1,
+#: 0.05, 0.01, 0.005 and 0.001 deg. The first that puts every angle of the table (within
+#: -180..180 deg) on the grid is taken; tables written by :func:`write_c81` from
+#: :data:`DEFAULT_ALPHAS_DEG` (two decimals) take 36 000.
+GRID_SIZES: tuple[int, ...] = (3600, 7200, 36000, 72000, 360000)
+
+_ON_GRID_TOL = 1e-6  # grid steps: how close to a grid point an angle of the table counts as on it
+
+
+def _grid_size(table: C81Table) -> int:
+    """The smallest of :data:`GRID_SIZES` with every table angle in [-180, 180] deg on the grid,
+    else the largest."""
+    angles = np.unique(np.concatenate([getattr(table, k).alpha for k in _BLOCKS]))
+    angles = angles[(angles >= -math.pi - _ANGLE_TOL) & (angles <= math.pi + _ANGLE_TOL)]
+    deg = np.rad2deg(angles) + 180.0
+    for n in GRID_SIZES:
+        k = deg * (n / 360.0)
+        if np.all(np.abs(k - np.round(k)) < _ON_GRID_TOL):
+            return n
+    return GRID_SIZES[-1]
+
+
+def _uniform_table(blk: C81Block, n: int) -> tuple[FloatArray, FloatArray]:
+    """Node values ``v`` (n, n_mach) of the block's piecewise-linear interpolant on the grid
+    ``-pi + 2 pi k / n`` and the increments ``d`` to the next node (periodic: node n is node 0)."""
+    grid = -math.pi + (2.0 * math.pi / n) * np.arange(n)
+    v = np.stack([np.interp(grid, blk.alpha, blk.values[:, j]) for j in range(blk.mach.size)], axis=1)
+    d = np.diff(np.concatenate([v, v[:1]]), axis=0)
+    return _readonly(v), _readonly(d)
+
+
+def _lookup(alpha: FloatArray, n: int, v: FloatArray, d: FloatArray) -> FloatArray:
+    """Linear interpolation on the uniform periodic grid of ``n`` intervals: the operations, in
+    order, of :meth:`rotorlyap.model.airfoil.Airfoil.coefficients` (so the compiled kernels,
+    which repeat them, agree to round-off)."""
+    u = np.mod(np.asarray(alpha, dtype=np.float64) + math.pi, 2.0 * math.pi)
+    u *= n / (2.0 * math.pi)
+    i = np.minimum(u.astype(np.intp), n - 1)  # u == n only through rounding
+    u = u - i
+    return v[i] + u * d[i]
+
+
+def _mach_blend(blk: C81Block, mach: FloatArray, cols: list[FloatArray]) -> FloatArray:
+    """Linear in the Mach number between the columns ``cols`` (one per Mach number of the
+    block), the Mach number clipped to the block's range."""
+    if blk.mach.size == 1:
+        return cols[0]
+    ms = blk.mach
+    m = np.clip(mach, ms[0], ms[-1])
+    j = np.clip(np.searchsorted(ms, m, side="right") - 1, 0, ms.size - 2)
+    s = (m - ms[j]) / (ms[j + 1] - ms[j])
+    stack = np.stack(cols)  # (n_mach, ...)
+    v0 = np.take_along_axis(stack, j[None, ...], axis=0)[0]
+    v1 = np.take_along_axis(stack, (j + 1)[None, ...], axis=0)[0]
+    return v0 + s * (v1 - v0)
+
+
 @dataclass(frozen=True)
 class C81Section:
     """A section whose coefficients come from a C81 table.
@@ -746,39 +805,155 @@ class C81Section:
     centre for tables made by :func:`table_from_section` from the package's sections),
     positive nose up.
 
-    Interpolation is linear in the angle and linear in the Mach number (bilinear). The Mach
-    number is clipped to each block's range: below its first Mach number the first column is
-    used, above its last the last (no extrapolation: a table says nothing outside its range).
-    A block with one Mach column is Mach-independent.
+    The model: the table's piecewise-linear interpolant in the angle, linear in the Mach
+    number (bilinear; :meth:`exact_coefficients`). The Mach number is clipped to each block's
+    range: below its first Mach number the first column is used, above its last the last (no
+    extrapolation: a table says nothing outside its range). A block with one Mach column is
+    Mach-independent; a section is :attr:`mach_dependent` if any block has two or more.
+
+    :meth:`coefficients` evaluates the same interpolant through a uniform periodic angle grid
+    of :attr:`table_size` intervals, ``-pi + 2 pi k / table_size`` (the grid
+    :class:`~rotorlyap.model.airfoil.Airfoil` uses, so that the compiled kernels of
+    :mod:`rotorlyap.model.compiled` and the enclosures of the proofs read a C81 section as
+    they read the package's own, :meth:`table_rows`). By default the grid is the coarsest of
+    :data:`GRID_SIZES` that holds every angle of the table: then the grid's interpolant *is*
+    the table's (every kink of the table a grid point), equal to :meth:`exact_coefficients` to
+    round-off (about 1e-15). Where no grid size holds every angle, the largest (0.001 deg) is
+    taken and the grid's interpolant differs from the table's only in the grid intervals
+    holding an angle of the table, by at most ``|slope jump| * h / 4`` there (``h`` = 2 pi /
+    table_size: below 3e-6 for a jump of the slope of 1 per deg);
+    :attr:`resampling_error` gives the bound of the table at hand. The closure at +-180 deg
+    is periodic (``alpha = pi`` is wrapped to ``-pi``): a table whose values at -180 and 180
+    deg differ is followed to its last angle below 180 deg and, in the last grid interval,
+    joined to its value at -180 deg.
+
+    Compressibility (:mod:`rotorlyap.model.compressibility`,
+    ``BladeParameters.compressibility``): a Mach-dependent table carries the compressibility
+    of its section, so the strip loads read it at the section Mach number ``|w| / a`` with
+    ``compressibility = "table"`` and the package's Prandtl-Glauert factor and drag rise are not
+    applied; ``"none"`` and ``"prandtl-glauert"`` with a Mach-dependent table are refused
+    (:class:`~rotorlyap.model.parameters.BladeParameters`), and so is ``"table"`` with a
+    Mach-independent section. A Mach-independent table is a section like the package's own:
+    ``"none"`` uses it as it is, ``"prandtl-glauert"`` corrects it as an incompressible
+    section (its one Mach column taken as incompressible data, whatever its Mach number).
+
+    Paths: the numpy strip loads take every C81 section; the compiled kernels and the proofs'
+    enclosures take a Mach-independent one (:meth:`table_rows`); for a Mach-dependent one
+    :meth:`table_rows` is None, the compiled kernels fall back to the numpy path and the
+    proofs refuse it (no Mach axis in the kernels or the enclosures).
 
     Parameters
     ----------
     table : C81Table
         The table.
+    table_size : int, optional
+        Intervals of the uniform angle grid, >= 360; 0 evaluates :meth:`exact_coefficients`
+        every call (numpy path only: no :meth:`table_rows`). Default: the smallest of
+        :data:`GRID_SIZES` holding every angle of the table (above).
+    thickness_ratio : float, optional
+        Thickness over chord, -, in (0, 0.5): used only by the Lock drag rise of
+        ``compressibility = "prandtl-glauert"`` on a Mach-independent table. Default 0.12
+        (:data:`rotorlyap.model.compressibility.THICKNESS_RATIO`).
+    file_name : str, optional
+        The C81 file the table was read from, as a parameter file names it (kept for writing the
+        parameter file back, :mod:`rotorlyap.model.parameter_files`); not compared.
     """
 
     table: C81Table
+    table_size: int | None = None
+    thickness_ratio: float = THICKNESS_RATIO
+    file_name: str | None = field(default=None, compare=False)
+    _grid: tuple = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.table, C81Table):
             raise TypeError(f"table must be a C81Table, got {type(self.table).__name__}")
+        ts = self.table_size
+        if ts is None:
+            ts = _grid_size(self.table)
+        if isinstance(ts, (bool, np.bool_)) or not isinstance(ts, (int, np.integer)):
+            raise TypeError(f"table_size must be None, 0 or an int >= 360, got {ts!r}")
+        if ts != 0 and ts < 360:
+            raise ValueError(f"table_size must be None (automatic), 0 (no grid) or >= 360, got {ts!r}")
+        object.__setattr__(self, "table_size", int(ts))
+        tc = self.thickness_ratio
+        if isinstance(tc, (bool, np.bool_)) or not isinstance(tc, (int, float, np.integer, np.floating)) \
+                or not 0.0 < float(tc) < 0.5:
+            raise ValueError(f"thickness_ratio must be a real number in (0, 0.5), got {tc!r}")
+        object.__setattr__(self, "thickness_ratio", float(tc))
+        if self.file_name is not None and not isinstance(self.file_name, str):
+            raise TypeError(f"file_name must be None or a str, got {self.file_name!r}")
+        grid = tuple(_uniform_table(getattr(self.table, k), ts) for k in _BLOCKS) if ts else ()
+        object.__setattr__(self, "_grid", grid)
 
     @property
     def name(self) -> str:
         """The table's name."""
         return self.table.name
 
+    @property
+    def mach_dependent(self) -> bool:
+        """True if a block has two or more Mach columns."""
+        return any(getattr(self.table, k).mach.size > 1 for k in _BLOCKS)
+
+    @property
+    def resampling_error(self) -> float:
+        """Bound of ``|coefficients - exact_coefficients|`` from the uniform grid, -: ``|slope
+        jump| * h / 4`` at the largest jump of a table angle off the grid (0 where every angle
+        is on it; round-off aside). ``nan`` with ``table_size = 0`` (no grid)."""
+        n = self.table_size
+        if n == 0:
+            return float("nan")
+        h = 2.0 * math.pi / n
+        worst = 0.0
+        for k in _BLOCKS:
+            blk = getattr(self.table, k)
+            a = blk.alpha
+            s = np.diff(blk.values, axis=0) / np.diff(a)[:, None]
+            jumps = np.abs(np.diff(s, axis=0)).max(axis=1)   # at the inner angles a[1:-1]
+            inner = a[1:-1]
+            kk = (inner + math.pi) / h
+            off = np.abs(kk - np.round(kk)) >= _ON_GRID_TOL
+            inside = (inner > -math.pi) & (inner < math.pi)
+            if np.any(off & inside):
+                worst = max(worst, float(jumps[off & inside].max()) * h / 4.0)
+        return worst
+
+    def table_rows(self) -> FloatArray | None:
+        """The uniform table of :meth:`coefficients` as one read-only array, in the layout of
+        :meth:`rotorlyap.model.airfoil.Airfoil.table_rows`, or None.
+
+        Returns
+        -------
+        numpy.ndarray, shape (table_size, 6) or None
+            Columns: value and increment of cl, cd and cm on the grid ``-pi + 2 pi k /
+            table_size`` (the compiled kernels and the proofs' enclosures read it). None for a
+            Mach-dependent table (the kernels and enclosures have no Mach axis: the compiled
+            path falls back to numpy, the proofs refuse) and with ``table_size = 0``.
+        """
+        if not self._grid or self.mach_dependent:
+            return None
+        rows = self.__dict__.get("_table_rows")
+        if rows is None:
+            rows = np.ascontiguousarray(np.stack([a[:, 0] for pair in self._grid for a in pair], axis=1))
+            rows.flags.writeable = False
+            object.__setattr__(self, "_table_rows", rows)
+        return rows
+
     def coefficients(self, alpha: ArrayLike, mach: ArrayLike = 0.0
                      ) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Lift, drag and moment coefficients at the angles of attack ``alpha``.
+
+        Through the uniform angle grid (class docstring: equal to :meth:`exact_coefficients`
+        to round-off where every angle of the table is on the grid), linear in the Mach number.
 
         Parameters
         ----------
         alpha : array_like
             Angle of attack, rad, any shape; wrapped to [-pi, pi).
         mach : array_like, optional
-            Mach number, -, broadcastable with ``alpha``; clipped to each block's Mach range.
-            Default 0.
+            Mach number, -, broadcastable with ``alpha``; clipped to each block's Mach range;
+            ignored by a Mach-independent table. Default 0.
 
         Returns
         -------
@@ -786,9 +961,70 @@ class C81Section:
             Lift, drag and pitching-moment coefficients, float64, of the broadcast shape of
             ``alpha`` and ``mach``.
         """
+        if not self._grid:
+            return self.exact_coefficients(alpha, mach)
+        n = self.table_size
+        if not self.mach_dependent:
+            al = np.asarray(alpha, dtype=np.float64)
+            if np.ndim(mach) and np.shape(mach) != al.shape:
+                al = np.broadcast_arrays(al, np.asarray(mach, dtype=np.float64))[0]
+            return tuple(_lookup(al, n, v[:, 0], d[:, 0]) for v, d in self._grid)  # type: ignore[return-value]
+        al, m = np.broadcast_arrays(np.asarray(alpha, dtype=np.float64), np.asarray(mach, dtype=np.float64))
+        out = []
+        for key, (v, d) in zip(_BLOCKS, self._grid):
+            blk = getattr(self.table, key)
+            cols = [_lookup(al, n, v[:, j], d[:, j]) for j in range(blk.mach.size)]
+            out.append(_mach_blend(blk, m, cols))
+        return out[0], out[1], out[2]
+
+    def exact_coefficients(self, alpha: ArrayLike, mach: ArrayLike = 0.0
+                           ) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """The table's bilinear interpolant itself (no grid); same interface as
+        :meth:`coefficients`."""
         al, m = np.broadcast_arrays(wrap_angle(alpha), np.asarray(mach, dtype=np.float64))
         t = self.table
         return _interpolate(t.cl, al, m), _interpolate(t.cd, al, m), _interpolate(t.cm, al, m)
+
+    def _forward_lift(self) -> tuple[FloatArray, FloatArray]:
+        """Angles (rad) and ``cl`` of the lowest Mach column at the table angles within +-90 deg."""
+        blk = self.table.cl
+        keep = np.abs(blk.alpha) <= 0.5 * math.pi
+        return blk.alpha[keep], blk.values[keep, 0]
+
+    @property
+    def cl_max(self) -> float:
+        """Largest ``cl`` of forward flow (+-90 deg) at the lowest Mach number of the table, -."""
+        return float(self._forward_lift()[1].max())
+
+    @property
+    def alpha_stall(self) -> float:
+        """Angle of :attr:`cl_max`, rad (the stall angle :func:`~rotorlyap.model.compressibility.validity_map` uses)."""
+        a, c = self._forward_lift()
+        return float(a[int(np.argmax(c))])
+
+    @property
+    def cl_min(self) -> float:
+        """Smallest ``cl`` of forward flow (+-90 deg) at the lowest Mach number, -."""
+        return float(self._forward_lift()[1].min())
+
+    @property
+    def alpha_stall_negative(self) -> float:
+        """Angle of :attr:`cl_min`, rad."""
+        a, c = self._forward_lift()
+        return float(a[int(np.argmin(c))])
+
+    @property
+    def alpha_zero_lift(self) -> float:
+        """Zero-lift angle between :attr:`alpha_stall_negative` and :attr:`alpha_stall` at the
+        lowest Mach number (linear between the table angles), rad."""
+        a, c = self._forward_lift()
+        lo, hi = int(np.argmin(c)), int(np.argmax(c))
+        if lo >= hi:
+            raise ValueError(f"the table {self.name!r} has its cl_min at or above the angle of its cl_max "
+                             "in forward flow: no zero-lift angle between them")
+        a, c = a[lo:hi + 1], c[lo:hi + 1]
+        k = int(np.argmax(c >= 0.0))  # first angle with cl >= 0 (k >= 1: c[0] = cl_min < 0)
+        return float(a[k - 1] + (a[k] - a[k - 1]) * (0.0 - c[k - 1]) / (c[k] - c[k - 1]))
 
 
 def _takes_mach(section: Any) -> bool:

@@ -57,8 +57,10 @@ When the kernels apply
 ----------------------
 :func:`rotorlyap.jit.use_compiled` (the environment variable ``ROTORLYAP_KERNEL``) at the
 construction of a blade's equations; the kernels apply to blades whose airfoil is tabulated
-(:class:`rotorlyap.model.airfoil.Airfoil` with ``table_size > 0``, the default); other
-airfoils use the numpy path.
+(:class:`rotorlyap.model.airfoil.Airfoil` with ``table_size > 0``, the default, and a
+Mach-independent C81 section, :class:`rotorlyap.model.c81.C81Section`, whose ``table_rows`` are
+its table on the same uniform grid); other airfoils use the numpy path, and so do Mach-dependent
+C81 sections (``compressibility = "table"``: the kernels have no Mach axis).
 """
 
 from __future__ import annotations
@@ -139,8 +141,9 @@ class KernelData:
 
 def kernel_data(eq: BladeEquations) -> KernelData | None:
     """The kernel data of ``eq``, or None where the numpy path must run (``ROTORLYAP_KERNEL=numpy``,
-    numba missing, or an airfoil without a table)."""
-    if not use_compiled():
+    numba missing, an airfoil without a table, or a section read at its Mach number,
+    ``compressibility = "table"``: the kernels have no Mach axis)."""
+    if not use_compiled() or eq.aero.compressibility.section_mach:
         return None
     table_rows = getattr(eq.params.airfoil, "table_rows", None)
     table = None if table_rows is None else table_rows()

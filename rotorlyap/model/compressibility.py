@@ -56,6 +56,13 @@ Check against the C81 NACA 0012 table at 0 deg (:data:`C81_NACA0012_CD_0DEG`): i
 0.0124 and 0.088 at 0.75, 0.8 and 0.9 (``M_crit = 0.642``): the right onset and size, a little
 early.
 
+A section with its own Mach dependence (a C81 table with several Mach columns,
+:class:`rotorlyap.model.c81.C81Section`) takes ``compressibility = "table"`` instead: the strip
+loads read its coefficients at ``M = |w| (1/a)`` and apply neither factor nor drag rise (the
+table already holds them; ``BladeParameters`` refuses ``"prandtl-glauert"`` with such a section,
+which would count compressibility twice). The quasi-steady pitch-damping couple then takes no
+Mach factor (a C81 table gives no pitch-rate derivative).
+
 Functions here are pure; the load kernels repeat the same operations in the same order (so the
 numpy and compiled paths agree to round-off).
 
@@ -306,19 +313,26 @@ class CompressibilityConstants:
         Cap of the Prandtl-Glauert factor, -.
     critical_mach_zero_lift : float
         ``kappa - t/c - (0.1/80)^(1/3)``: ``M_crit`` at zero lift, -.
+    section_mach : bool
+        ``params.compressibility == "table"``: the section's own Mach dependence (a
+        Mach-dependent C81 table, :class:`rotorlyap.model.c81.C81Section`) is read at the section
+        Mach number ``|w| (1/a)``; ``enabled`` is then False (no correction on top).
     """
 
     enabled: bool
     inverse_speed_of_sound: float
     mach_cap: float
     critical_mach_zero_lift: float
+    section_mach: bool = False
 
 
 def compressibility_constants(params: Any) -> CompressibilityConstants:
     """The :class:`CompressibilityConstants` of a :class:`~rotorlyap.model.parameters.BladeParameters`.
 
     ``t/c`` is ``params.airfoil.thickness_ratio`` if the airfoil object has it, else
-    :data:`THICKNESS_RATIO`; ``kappa_A`` is :data:`KORN_KAPPA_CONVENTIONAL`.
+    :data:`THICKNESS_RATIO`; ``kappa_A`` is :data:`KORN_KAPPA_CONVENTIONAL`. With ``"table"``
+    (a Mach-dependent section) the correction is off (``enabled`` False) and ``section_mach``
+    on: the table's own Mach dependence replaces it, so compressibility is not applied twice.
 
     Raises
     ------
@@ -326,15 +340,16 @@ def compressibility_constants(params: Any) -> CompressibilityConstants:
         An unknown ``params.compressibility`` or a bad speed of sound or thickness.
     """
     model = params.compressibility
-    if model not in ("none", "prandtl-glauert"):
-        raise ValueError(f"compressibility must be one of ('none', 'prandtl-glauert'), got {model!r}")
+    if model not in ("none", "prandtl-glauert", "table"):
+        raise ValueError(f"compressibility must be one of ('none', 'prandtl-glauert', 'table'), got {model!r}")
     a = float(params.speed_of_sound)
     if not (math.isfinite(a) and a > 0.0):
         raise ValueError(f"speed_of_sound must be a finite speed > 0 m/s, got {params.speed_of_sound!r}")
     tc = _fraction("thickness_ratio", getattr(params.airfoil, "thickness_ratio", THICKNESS_RATIO), 0.0, 0.5)
     return CompressibilityConstants(
         enabled=model == "prandtl-glauert", inverse_speed_of_sound=1.0 / a, mach_cap=MACH_CAP,
-        critical_mach_zero_lift=float(critical_mach(0.0, tc, KORN_KAPPA_CONVENTIONAL)))
+        critical_mach_zero_lift=float(critical_mach(0.0, tc, KORN_KAPPA_CONVENTIONAL)),
+        section_mach=model == "table")
 
 
 def apply_to_coefficients(alpha: FloatArray, speed: FloatArray, cl: FloatArray, cd: FloatArray,
@@ -522,7 +537,10 @@ def validity_map(blade: Any, steady: ArrayLike | Callable[[Any], Any], psi: Arra
     mach = section_mach(speed, p.speed_of_sound)
     alpha_raw = np.asarray(blade.angle_of_attack(psi_a, z), dtype=np.float64)
     alpha = np.mod(alpha_raw + math.pi, 2.0 * math.pi) - math.pi
-    cl = np.asarray(p.airfoil.coefficients(alpha_raw)[0], dtype=np.float64)
+    if consts.section_mach:
+        cl = np.asarray(p.airfoil.coefficients(alpha_raw, mach)[0], dtype=np.float64)
+    else:
+        cl = np.asarray(p.airfoil.coefficients(alpha_raw)[0], dtype=np.float64)
     if consts.enabled:
         cl = apply_to_coefficients(alpha_raw, speed, cl, np.zeros_like(cl), np.zeros_like(cl), consts)[0]
     mdd = (consts.critical_mach_zero_lift - 0.1 * np.abs(cl)) + CRITICAL_MACH_OFFSET

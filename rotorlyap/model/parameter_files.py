@@ -17,7 +17,15 @@ one (each field's unit and source as a comment). The schema, ``rotorlyap.blade/1
   table ``{ r_over_R = [...], values = [...] }``
   (:class:`~rotorlyap.model.parameters.TabulatedProfile`); ``airfoil`` one of the names of
   :data:`rotorlyap.model.parameters.FILE_AIRFOILS` or a table ``{ base = NAME, <field> = value, ... }`` that changes fields of
-  a named section (angles in rad, slopes per rad); fields whose value is ``None``
+  a named section (angles in rad, slopes per rad), or a C81 table: ``airfoil = "name.c81"``
+  (a string ending in ``.c81``, any case), the file read by :func:`rotorlyap.model.c81.read_c81`
+  from a path relative to the parameter file's directory, or ``airfoil = { file = "name.c81",
+  thickness_ratio = 0.09, table_size = 72000 }`` with options of
+  :class:`~rotorlyap.model.c81.C81Section`. Writing a blade with a C81 section writes its table
+  beside the parameter file, under the section's ``file_name`` (its base name: the file it was
+  read from) or else ``<parameter file stem>.c81``, and names it; an existing file there is kept
+  if it holds the same table and refused if it holds another. A table not on the printed grid of
+  a C81 file (4 decimals) is rounded, with a warning. Fields whose value is ``None``
   (``collective``, ``inflow_ratio``, ``wind_point``) are left out.
 
 Every value then passes the same validation as in Python (ranges, unit slips).
@@ -31,10 +39,21 @@ from __future__ import annotations
 import dataclasses
 import math
 import tomllib
+import warnings
 from pathlib import Path
 from typing import Any, Callable, Mapping, Sequence
 
-__all__ = ["PROFILE_FIELDS", "SCHEMA", "read_file", "write_file"]
+from .c81 import C81Section, read_c81, write_c81
+from .compressibility import THICKNESS_RATIO
+
+__all__ = ["C81_OPTIONS", "C81_SUFFIX", "PROFILE_FIELDS", "SCHEMA", "read_file", "write_file"]
+
+#: The ending (any case) that makes a string ``airfoil`` a C81 file name.
+C81_SUFFIX: str = ".c81"
+
+#: Options of a C81 section a parameter file may give beside ``file``
+#: (:class:`rotorlyap.model.c81.C81Section`).
+C81_OPTIONS: tuple[str, ...] = ("table_size", "thickness_ratio")
 
 #: The schema name and version a parameter file must declare.
 SCHEMA: str = "rotorlyap.blade/1"
@@ -47,11 +66,44 @@ def _fail(path: Path, message: str) -> ValueError:
     return ValueError(f"{path}: {message}")
 
 
+def _is_c81_name(value: Any) -> bool:
+    return isinstance(value, str) and value.lower().endswith(C81_SUFFIX)
+
+
+def _c81_from(path: Path, file: str, options: Mapping[str, Any]) -> C81Section:
+    """The C81 section of ``airfoil = "name.c81"`` (or ``{ file = "name.c81", ... }``), the file
+    looked for beside the parameter file ``path``."""
+    c81 = (path.parent / file)
+    if not c81.is_file():
+        raise FileNotFoundError(f"{path}: airfoil = {file!r}: no such C81 file {c81} (a C81 file is "
+                                f"looked for relative to the parameter file's directory {path.parent})")
+    try:
+        table = read_c81(c81)
+    except ValueError as exc:
+        raise _fail(path, f"airfoil = {file!r}: {exc}") from exc
+    unknown = sorted(set(options) - set(C81_OPTIONS))
+    if unknown:
+        raise _fail(path, f"airfoil: unknown key(s) {unknown} of a C81 section; allowed: file, "
+                          f"{', '.join(C81_OPTIONS)}")
+    try:
+        return C81Section(table, file_name=file, **options)
+    except (TypeError, ValueError) as exc:
+        raise _fail(path, f"airfoil = {file!r}: {exc}") from exc
+
+
 def _airfoil_from(path: Path, value: Any, airfoils: Mapping[str, Any]) -> Any:
+    if _is_c81_name(value):
+        return _c81_from(path, value, {})
+    if isinstance(value, dict) and "file" in value:
+        options = dict(value)
+        file = options.pop("file")
+        if not _is_c81_name(file):
+            raise _fail(path, f"airfoil.file must name a C81 file ending in {C81_SUFFIX!r}, got {file!r}")
+        return _c81_from(path, file, options)
     if isinstance(value, str):
         if value not in airfoils:
-            raise _fail(path, f"airfoil must be one of {tuple(airfoils)} or a table "
-                              f"{{ base = NAME, field = value, ... }}, got {value!r}")
+            raise _fail(path, f"airfoil must be one of {tuple(airfoils)}, a C81 file name ending in "
+                              f"{C81_SUFFIX!r} or a table {{ base = NAME, field = value, ... }}, got {value!r}")
         return airfoils[value]
     if isinstance(value, dict):
         changes = dict(value)
@@ -107,7 +159,8 @@ def read_file(path: str | Path, field_names: Sequence[str], airfoils: Mapping[st
     Raises
     ------
     FileNotFoundError
-        If there is no such file.
+        If there is no such file, or no C81 file the ``airfoil`` names (the message gives the
+        path looked for).
     ValueError
         A file that is not TOML, of another schema, with an unknown key, a bad airfoil or a bad
         profile table (the message names the file and the key, and says what is allowed).
@@ -160,7 +213,39 @@ def _toml_value(name: str, value: Any) -> str:
     raise ValueError(f"{name} = {value!r} cannot be written to a parameter file")
 
 
-def _airfoil_to(value: Any, airfoils: Mapping[str, Any]) -> Any:
+def _c81_to(value: C81Section, path: Path) -> Any:
+    """Write the table of ``value`` beside the parameter file ``path`` and return what the
+    parameter file holds: the file name, or ``{ file = ..., <option> = ... }`` for options that
+    differ from their defaults."""
+    name = Path(value.file_name).name if value.file_name else path.stem + C81_SUFFIX
+    target = path.parent / name
+    text = write_c81(value.table)
+    if target.exists():
+        try:
+            same = read_c81(target) == value.table
+        except (OSError, ValueError):
+            same = False
+        if not same:
+            raise ValueError(f"airfoil: {target} exists and holds another table than the section "
+                             f"{value.name!r}; move it, or give the section another file_name "
+                             f"(dataclasses.replace(section, file_name=...))")
+    else:
+        target.write_text(text, encoding="ascii", newline="\n")
+    if read_c81(text) != value.table:
+        warnings.warn(f"airfoil: the table {value.name!r} written to {target} is rounded to the printed "
+                      f"decimals of a C81 file (coefficients within 5e-5, rotorlyap.model.c81.write_c81): "
+                      f"the parameter file reads back this rounded table", UserWarning, stacklevel=4)
+    options = {}
+    if value.table_size != C81Section(value.table).table_size:
+        options["table_size"] = value.table_size
+    if value.thickness_ratio != THICKNESS_RATIO:
+        options["thickness_ratio"] = value.thickness_ratio
+    return {"file": name, **options} if options else name
+
+
+def _airfoil_to(value: Any, airfoils: Mapping[str, Any], path: Path) -> Any:
+    if isinstance(value, C81Section):
+        return _c81_to(value, path)
     for key, named in airfoils.items():
         if type(value) is type(named) and value == named:
             return key
@@ -201,7 +286,13 @@ def write_file(path: str | Path, entries: Sequence[tuple[str, Any, str]], airfoi
     ------
     ValueError
         A value a file cannot hold: a profile given as an arbitrary callable (give a tabulated
-        profile), an airfoil of another type, or a ``sources`` key that is not a field.
+        profile), an airfoil of another type, a ``sources`` key that is not a field, or a C81
+        section whose file name is taken beside ``path`` by another table.
+
+    Warns
+    -----
+    UserWarning
+        A C81 table rounded by writing it (module docstring).
     """
     path = Path(path)
     names = [e[0] for e in entries]
@@ -212,7 +303,7 @@ def write_file(path: str | Path, entries: Sequence[tuple[str, Any, str]], airfoi
         if value is None:
             continue
         if field == "airfoil":
-            value = _airfoil_to(value, airfoils)
+            value = _airfoil_to(value, airfoils, path)
         elif isinstance(value, profile_type):
             value = {"r_over_R": value.r_over_R, "values": value.values}
         elif callable(value):

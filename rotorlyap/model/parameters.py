@@ -77,9 +77,11 @@ __all__ = [
 INFLOW_MODELS: tuple[str, ...] = ("uniform", "glauert", "drees", "pitt-peters", "coleman")
 """Inflow models :func:`rotorlyap.model.inflow.kx_factor` knows (``BladeParameters.inflow_model``)."""
 
-COMPRESSIBILITY_MODELS: tuple[str, ...] = ("none", "prandtl-glauert")
+COMPRESSIBILITY_MODELS: tuple[str, ...] = ("none", "prandtl-glauert", "table")
 """Compressibility corrections of the section loads (``BladeParameters.compressibility``):
-none, or the Prandtl-Glauert lift slope with a drag rise (:mod:`rotorlyap.model.compressibility`)."""
+none, the Prandtl-Glauert lift slope with a drag rise (:mod:`rotorlyap.model.compressibility`),
+or the section's own Mach dependence (``"table"``: a C81 table with several Mach columns,
+:class:`rotorlyap.model.c81.C81Section`, read at the section Mach number; no correction on top)."""
 
 #: ISA sea-level speed of sound, m/s (ICAO standard atmosphere: 340.294 m/s at 288.15 K).
 ISA_SPEED_OF_SOUND: float = 340.294
@@ -270,6 +272,22 @@ def _check_unit_slips(p: "BladeParameters") -> None:
                 f"{name} is in rad; if {v!r} is in degrees, give {math.radians(v):.4g} rad")
 
 
+def _check_section_mach(airfoil: Any, compressibility: str) -> None:
+    """Refuse a compressibility model that contradicts the section's own Mach dependence."""
+    dependent = bool(getattr(airfoil, "mach_dependent", False))
+    name = getattr(airfoil, "name", type(airfoil).__name__)
+    if dependent and compressibility != "table":
+        what = ("would apply the package's Prandtl-Glauert factor and drag rise on top of the table's "
+                "own Mach dependence (compressibility twice)" if compressibility == "prandtl-glauert"
+                else "asks for incompressible loads, but the table has no incompressible column to use")
+        raise ValueError(f"compressibility = {compressibility!r} with the Mach-dependent section {name!r} "
+                         f"{what}; use compressibility = 'table' (the table read at the section Mach number)")
+    if compressibility == "table" and not dependent:
+        raise ValueError(f"compressibility = 'table' reads the section's own Mach dependence, but the section "
+                         f"{name!r} has none (a C81 table with one Mach column, or a package section); use "
+                         f"'none' or 'prandtl-glauert', or a C81 table with two or more Mach columns")
+
+
 @dataclass(frozen=True)
 class BladeParameters:
     """Parameters of the isolated rigid blade, its rotor and the flight condition.
@@ -394,8 +412,12 @@ class BladeParameters:
         paper's untilted disc); :func:`rotorlyap.model.forward_trim.forward_flight_trim` sets it so
         that the rotor force balances the weight and the fuselage drag.
     compressibility : str
-        One of :data:`COMPRESSIBILITY_MODELS`: ``"none"`` (the paper's incompressible sections)
-        or ``"prandtl-glauert"`` (:mod:`rotorlyap.model.compressibility`).  Assumed: "none".
+        One of :data:`COMPRESSIBILITY_MODELS`: ``"none"`` (the paper's incompressible sections),
+        ``"prandtl-glauert"`` (:mod:`rotorlyap.model.compressibility`) or ``"table"`` (the
+        airfoil's own Mach dependence, a Mach-dependent C81 table read at the section Mach number
+        ``|w| / speed_of_sound``, with no correction on top). A Mach-dependent airfoil (attribute
+        ``mach_dependent`` True) needs ``"table"``, and ``"table"`` needs one: the other
+        combinations would apply compressibility twice or not use the table's. Assumed: "none".
     speed_of_sound : float
         Speed of sound, m/s, > 0 (the section Mach number is the section air speed over it).
         Assumed: 340.294, ISA sea level.
@@ -535,6 +557,7 @@ class BladeParameters:
                 or callable(getattr(self.airfoil, "coefficients", None))):
             raise TypeError("airfoil must be an Airfoil, a LinearAirfoil or an object with a "
                             f"coefficients(alpha) method, got {self.airfoil!r}")
+        _check_section_mach(self.airfoil, self.compressibility)
         _warn_template(self)
 
     # ------------------------------------------------------------------ cases
