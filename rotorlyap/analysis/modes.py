@@ -29,12 +29,13 @@ negative = decaying); damping ratios ``-Re s / |s|``, dimensionless.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..conventions import MAX_ADVANCE_RATIO, TWO_PI
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, TemplateValuesWarning
 from ..model.blade import Blade
 from ..model.forward_trim import TRIM_TARGETS, forward_flight_trim
 from ..model.modes import Mode, modes_from_jacobian
@@ -182,10 +183,14 @@ def fan_plot(params: BladeParameters, rotor_speeds, *, air: bool = True) -> FanD
             except ConvergenceError as exc:
                 raise ValueError(f"fan_plot(air=False) needs the hover collective at the nominal rotor "
                                  f"speed, and its trim failed: {exc}") from exc
-        base = replace(base, air_density=0.0)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", TemplateValuesWarning)
+            base = replace(base, air_density=0.0)
     modes, collective, messages = [], [], []
     for omega in speeds:
-        p = replace(base, rotor_speed=float(omega))  # the parameter checks refuse a bad speed (ValueError)
+        with warnings.catch_warnings():  # the blade given, at another speed: its template fields are its own
+            warnings.simplefilter("ignore", TemplateValuesWarning)
+            p = replace(base, rotor_speed=float(omega))  # the parameter checks refuse a bad speed (ValueError)
         try:
             blade = Blade(p)  # trims the collective if it is None
             z = blade.equilibrium()

@@ -335,8 +335,10 @@ def plot_sweep_table(result):
         label = ", ".join(f"{n} = {v:g}" if isinstance(v, float) else f"{n} = {v}" for n, v in zip(others, key)) or None
         ax1.plot(x, g, line, color=colour, marker=marker, ms=4, label=label)
         ax2.plot(x, s, line, color=colour, lw=1)
-        ax2.plot(x[c], s[c], marker, color=colour, ms=5, ls="none")
-        ax2.plot(x[~c], s[~c], "x", color=colour, ms=6, ls="none", clip_on=False)
+        if c.any():
+            ax2.plot(x[c], s[c], marker, color=colour, ms=5, ls="none")
+        if not c.all():  # (an empty line unclipped would stretch the layout)
+            ax2.plot(x[~c], s[~c], "x", color=colour, ms=6, ls="none", clip_on=False)
     ax1.axhline(0.0, color="k", lw=0.8)
     ax1.set_ylabel("largest Floquet real part (per rev)")
     ax1.set_title("(a) linear stability", fontsize=9)
