@@ -1,4 +1,4 @@
-"""The command line: ``python -m rotorlyap``.
+"""The command line: ``rotorlyap`` (installed by ``pip install -e .``) or ``python -m rotorlyap``.
 
 ``python -m rotorlyap analyse [--params FILE | --cg forward] --mu 0.15``
     one technical-stability analysis (any function, reading and rule of
@@ -11,8 +11,24 @@
 ``python -m rotorlyap sweep --mu 0:0.3:0.1 --cg forward,backward --set lag_damping=5000,10000 --out t.csv``
     :func:`rotorlyap.analysis.sweep.sweep`: the certificate over a full-factorial grid, one table
     (CSV or JSON), on every core or on a Dask cluster (``--scheduler``), with a progress bar;
+``python -m rotorlyap modes [--params FILE] --rotor-speed-ratios 0.8:1.2:0.05 --mu 0:0.2:0.05 --out m.csv --plot m.png``
+    the blade's modes: :func:`rotorlyap.analysis.modes.fan_plot` (the hover modes' frequencies, per
+    rev and in Hz, and damping at each rotor speed, given as fractions of the blade's own or in rad/s
+    with ``--rotor-speeds``; ``--vacuum`` for the fan diagram without air) and
+    :func:`rotorlyap.analysis.modes.floquet_modes` (the Floquet modes of the trimmed helicopter's
+    periodic motion at each advance ratio); one table, a JSON summary, a figure with the 1/rev to
+    4/rev lines;
+``python -m rotorlyap simulate [--params FILE] --mu 0.1 --disturb flap=2deg,lag=1deg --revs 10 --certify --out s.csv --plot s.png``
+    :func:`rotorlyap.analysis.disturbance.simulate_disturbance`: the nonlinear motion of the trimmed
+    blade from a disturbance (angles in deg or rad, rates ``flap_rate=...`` in deg/s or rad/s), the
+    hinge angles against revolutions, with ``--certify`` the quadratic certificate's bound per hinge;
 ``python -m rotorlyap figures --out DIR``
     regenerates the data (CSV) and pictures (PNG) of the paper's Figs 4-8 into ``DIR``.
+
+``--plot FILE.png|FILE.svg`` draws a figure (matplotlib's Agg backend, files only): on ``certify`` the
+certified start region and bound per hinge, on ``sweep`` the largest Floquet real part and the
+certified flap start region against ``mu``, on ``modes`` and ``simulate`` as above. Tables are CSV
+or JSON by the suffix of ``--out``.
 
 A blade is Table I's (``--cg`` chooses its C.G. case, default forward) or read from a parameter
 file (``--params FILE``, TOML, :meth:`rotorlyap.BladeParameters.from_file`); with a file,
@@ -24,7 +40,8 @@ Warnings go to stderr as well as into the JSON. The command line runs one BLAS t
 ``OPENBLAS_NUM_THREADS`` (or ``MKL_NUM_THREADS``) says otherwise: the searches work on tiny arrays,
 where more threads only wait for a busy core.
 
-Bad arguments give a one-line message and exit status 2; a failure of the analysis itself
+Bad arguments (an unknown hinge or unit in ``--disturb``, a file suffix, a negative ``--revs``...)
+give a one-line message and exit status 2; a failure of the analysis itself
 (for example a trim that does not converge, a parameter file with a bad value, or a missing
 optional dependency) gives a message and exit status 1.
 """
