@@ -41,6 +41,9 @@ _PUBLIC = {
     "forward_flight_trim": "model.forward_trim",
     "sweep": "analysis.sweep", "SweepResult": "analysis.sweep",
     "stable_region": "analysis.region", "StableRegion": "analysis.region",
+    "fan_plot": "analysis.modes", "FanData": "analysis.modes",
+    "floquet_modes": "analysis.modes", "FloquetModes": "analysis.modes",
+    "simulate_disturbance": "analysis.disturbance", "DisturbedMotion": "analysis.disturbance",
     # shared conventions, errors and printing
     "DEFAULT_A": "conventions", "DEFAULT_SCALES": "conventions",
     "PAPER_TEST_DISTURBANCES": "conventions", "STATE_NAMES": "conventions",

@@ -1,4 +1,4 @@
-"""The command line: ``python -m rotorlyap``.
+"""The command line: ``rotorlyap`` (installed by ``pip install -e .``) or ``python -m rotorlyap``.
 
 ``python -m rotorlyap analyse [--params FILE | --cg forward] --mu 0.15``
     one technical-stability analysis (any function, reading and rule of
@@ -11,8 +11,24 @@
 ``python -m rotorlyap sweep --mu 0:0.3:0.1 --cg forward,backward --set lag_damping=5000,10000 --out t.csv``
     :func:`rotorlyap.analysis.sweep.sweep`: the certificate over a full-factorial grid, one table
     (CSV or JSON), on every core or on a Dask cluster (``--scheduler``), with a progress bar;
+``python -m rotorlyap modes [--params FILE] --rotor-speed-ratios 0.8:1.2:0.05 --mu 0:0.2:0.05 --out m.csv --plot m.png``
+    the blade's modes: :func:`rotorlyap.analysis.modes.fan_plot` (the hover modes' frequencies, per
+    rev and in Hz, and damping at each rotor speed, given as fractions of the blade's own or in rad/s
+    with ``--rotor-speeds``; ``--vacuum`` for the fan diagram without air) and
+    :func:`rotorlyap.analysis.modes.floquet_modes` (the Floquet modes of the trimmed helicopter's
+    periodic motion at each advance ratio); one table, a JSON summary, a figure with the 1/rev to
+    4/rev lines;
+``python -m rotorlyap simulate [--params FILE] --mu 0.1 --disturb flap=2deg,lag=1deg --revs 10 --certify --out s.csv --plot s.png``
+    :func:`rotorlyap.analysis.disturbance.simulate_disturbance`: the nonlinear motion of the trimmed
+    blade from a disturbance (angles in deg or rad, rates ``flap_rate=...`` in deg/s or rad/s), the
+    hinge angles against revolutions, with ``--certify`` the quadratic certificate's bound per hinge;
 ``python -m rotorlyap figures --out DIR``
     regenerates the data (CSV) and pictures (PNG) of the paper's Figs 4-8 into ``DIR``.
+
+``--plot FILE.png|FILE.svg`` draws a figure (matplotlib's Agg backend, files only): on ``certify`` the
+certified start region and bound per hinge, on ``sweep`` the largest Floquet real part and the
+certified flap start region against ``mu``, on ``modes`` and ``simulate`` as above. Tables are CSV
+or JSON by the suffix of ``--out``.
 
 A blade is Table I's (``--cg`` chooses its C.G. case, default forward) or read from a parameter
 file (``--params FILE``, TOML, :meth:`rotorlyap.BladeParameters.from_file`); with a file,
@@ -24,7 +40,8 @@ Warnings go to stderr as well as into the JSON. The command line runs one BLAS t
 ``OPENBLAS_NUM_THREADS`` (or ``MKL_NUM_THREADS``) says otherwise: the searches work on tiny arrays,
 where more threads only wait for a busy core.
 
-Bad arguments give a one-line message and exit status 2; a failure of the analysis itself
+Bad arguments (an unknown hinge or unit in ``--disturb``, a file suffix, a negative ``--revs``...)
+give a one-line message and exit status 2; a failure of the analysis itself
 (for example a trim that does not converge, a parameter file with a bad value, or a missing
 optional dependency) gives a message and exit status 1.
 """
@@ -182,6 +199,51 @@ def _table_path(text: str) -> Path:
     return path
 
 
+def _figure_path(text: str) -> Path:
+    path = Path(text)
+    if path.suffix.lower() not in (".png", ".svg"):
+        raise argparse.ArgumentTypeError(f"--plot must end in .png or .svg (the figure's format), got {text!r}")
+    return path
+
+
+_ANGLE_UNITS = {"deg": math.pi / 180.0, "rad": 1.0}
+_RATE_UNITS = {"deg/s": math.pi / 180.0, "rad/s": 1.0}
+
+
+def _disturbance(text: str) -> dict[str, float]:
+    """``--disturb flap=2deg,lag=1deg,pitch_rate=10deg/s``: hinge angles (deg or rad) and rates
+    (deg/s or rad/s) -> ``{name: rad or rad/s}`` (:func:`rotorlyap.analysis.disturbance.simulate_disturbance`)."""
+    names = HINGE_SYMBOLS + tuple(f"{h}_rate" for h in HINGE_SYMBOLS)
+    usage = ("--disturb must be NAME=VALUEUNIT items separated by commas, NAME one of "
+             f"{', '.join(names)}, UNIT deg or rad for an angle and deg/s or rad/s for a rate, e.g. "
+             "flap=2deg,lag=1deg")
+    out: dict[str, float] = {}
+    for item in (p.strip() for p in text.split(",")):
+        if not item:
+            continue
+        name, sep, value = (x.strip() for x in item.partition("="))
+        if not sep or name not in names:
+            raise argparse.ArgumentTypeError(f"{usage}; got {item!r}")
+        if name in out:
+            raise argparse.ArgumentTypeError(f"--disturb gives {name} twice: {text!r}")
+        units = _RATE_UNITS if name.endswith("_rate") else _ANGLE_UNITS
+        unit = next((u for u in sorted(units, key=len, reverse=True) if value.endswith(u)), None)
+        if unit is None:
+            raise argparse.ArgumentTypeError(
+                f"--disturb {name} needs a unit, {' or '.join(units)}, after its number (e.g. {name}=2"
+                f"{next(iter(units))}); got {value!r}")
+        try:
+            v = float(value[: -len(unit)])
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"--disturb {name} must be a number and a unit, got {value!r}") from None
+        if not math.isfinite(v):
+            raise argparse.ArgumentTypeError(f"--disturb {name} must be finite, got {value!r}")
+        out[name] = v * units[unit]
+    if not out:
+        raise argparse.ArgumentTypeError(f"{usage}; got {text!r}")
+    return out
+
+
 # ---------------------------------------------------------------------- the parser
 
 
@@ -193,16 +255,16 @@ def _blade_options(p: argparse.ArgumentParser) -> None:
                         "explicitly, it overrides the file's cg_position")
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of ``python -m rotorlyap``."""
+def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
+    """The argument parser of ``python -m rotorlyap`` (and of the ``rotorlyap`` command, ``prog``)."""
     from .conventions import MAX_ADVANCE_RATIO
 
     parser = argparse.ArgumentParser(
-        prog="python -m rotorlyap",
+        prog=prog,
         description="Technical stability of the Narkiewicz & Lucjanek (1989) rotor blade by "
                     "Liapunov's direct method.",
     )
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{analyse,certify,sweep,figures}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{analyse,certify,sweep,modes,simulate,figures}")
 
     a = sub.add_parser("analyse", help="one stability analysis of a blade, printed as JSON",
                        description="Run blade_stability for one blade and print the result as JSON. "
@@ -254,6 +316,8 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--verify", action="store_true",
                    help="also prove the certificate by ball arithmetic (rotorlyap.certify(verify=True)): "
                         "seconds in hover, minutes in forward flight; adds 'proof' to the JSON")
+    c.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
+                   help="also draw the certified start region and bound per hinge (deg, deg/s)")
 
     s = sub.add_parser("sweep", help="certify over a grid (mu, C.G., A, any parameter), one CSV/JSON table",
                        description="Run the certificate (as the certify command) at every point of a "
@@ -289,6 +353,68 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of each certificate")
     s.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
                    help="quasi-random directions per sphere")
+    s.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
+                   help="also draw the sweep: the largest Floquet real part and the certified flap start "
+                        "region against mu (or the last column that varies), a line per value of the others")
+
+    m = sub.add_parser("modes", help="the blade's modes: a fan diagram against rotor speed and Floquet modes "
+                                     "against mu, a table (CSV/JSON) and a figure",
+                       description="The hover modes (frequency in /rev and Hz, damping ratio) at each rotor "
+                                   "speed, the blade trimmed to hover at each speed (rotorlyap.fan_plot), and the "
+                                   "Floquet modes of the trimmed helicopter's periodic motion at each advance "
+                                   "ratio (rotorlyap.floquet_modes). Rotor speeds are fractions of the blade's "
+                                   "own (--rotor-speed-ratios, default 0.8:1.2:0.05) or in rad/s "
+                                   "(--rotor-speeds). One table, a row per mode: kind (hover, vacuum or "
+                                   "floquet), rotor_speed_rad_s, rotor_speed_ratio, mu, mode, hinge, "
+                                   "frequency_per_rev, frequency_hz, growth_rate_per_rev, damping_ratio, error. "
+                                   "Prints a JSON summary.")
+    _blade_options(m)
+    speeds = m.add_mutually_exclusive_group()
+    speeds.add_argument("--rotor-speed-ratios", type=_float_list("--rotor-speed-ratios", 0.0, 3.0, open_lo=True),
+                        default=None, metavar="LIST",
+                        help="rotor speeds as fractions of the blade's rotor_speed, e.g. 0.8:1.2:0.05 (the default)")
+    speeds.add_argument("--rotor-speeds", type=_float_list("--rotor-speeds", 0.0, 1e4, open_lo=True), default=None,
+                        metavar="LIST", help="rotor speeds in rad/s, e.g. 20,25,30 or 20:32:2")
+    m.add_argument("--vacuum", action="store_true",
+                   help="the fan diagram in vacuum (no air: springs, centrifugal and inertial forces) at the "
+                        "nominal hover collective, instead of the hover trim at each speed")
+    m.add_argument("--mu", type=_float_list("--mu", 0.0, MAX_ADVANCE_RATIO), default=[0.0, 0.05, 0.1, 0.15, 0.2],
+                   help="advance ratios of the Floquet modes, e.g. 0:0.3:0.05 (default 0:0.2:0.05); the modes "
+                        "are followed from hover on steps of at most 0.025")
+    m.add_argument("--no-floquet", action="store_true", help="the fan diagram only")
+    m.add_argument("--condition", choices=CONDITIONS, default="propulsive",
+                   help="the trim of the Floquet modes (as certify; default propulsive)")
+    m.add_argument("--out", type=_table_path, default=None, help="the table: FILE.csv or FILE.json")
+    m.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
+                   help="the figure: fan diagram (Hz against rad/s, 1/rev to 4/rev lines) and damping; "
+                        "Floquet frequency and growth rate against mu")
+
+    d = sub.add_parser("simulate", help="the nonlinear motion of the trimmed blade after a disturbance, a table "
+                                        "and a figure",
+                       description="Trim the helicopter at --mu, disturb the blade's steady motion at azimuth 0 "
+                                   "and integrate the nonlinear equations (rotorlyap.simulate_disturbance). The "
+                                   "table has a row per output time: revolution, time_s, per hinge <hinge>_deg, "
+                                   "<hinge>_steady_deg, <hinge>_deviation_deg, scaled_norm (and <hinge>_bound_deg "
+                                   "with --certify). Prints a JSON summary.")
+    _blade_options(d)
+    d.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
+                   help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
+    d.add_argument("--disturb", type=_disturbance, required=True, metavar="NAME=VALUEUNIT,...",
+                   help="the disturbance at azimuth 0: flap, lag, pitch in deg or rad, flap_rate, lag_rate, "
+                        "pitch_rate in deg/s or rad/s, e.g. flap=2deg,lag=1deg,pitch=0.5deg")
+    d.add_argument("--revs", type=_float_in("--revs", 0.0, 1e4, open_lo=True), default=10.0,
+                   help="length of the motion, revolutions (default 10)")
+    d.add_argument("--condition", choices=CONDITIONS, default="propulsive",
+                   help="the trim (as certify; default propulsive)")
+    d.add_argument("--certify", action="store_true",
+                   help="also certify the trim with the quadratic function (seconds in hover, tens of seconds in "
+                        "forward flight) and draw its bound per hinge about the steady motion")
+    d.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of the certificate")
+    d.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
+                   help="quasi-random directions per sphere of the certificate")
+    d.add_argument("--out", type=_table_path, default=None, help="the table: FILE.csv or FILE.json")
+    d.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
+                   help="the figure: the hinge angles against revolutions, the steady motion and the bound")
 
     f = sub.add_parser("figures", help="regenerate the data (CSV) and PNGs of Figs 4-8 into a folder",
                        description="Regenerate the data (CSV) and pictures (PNG) of the paper's Figs 4-8.")
@@ -540,7 +666,12 @@ def _certify(args) -> int:
           file=sys.stderr, flush=True)
     cert = certify(params, args.mu, condition=args.condition, function=function, A=args.A, scales=scales,
                    n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify)
-    _dump(certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere))
+    data = certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere)
+    if args.plot is not None:
+        from .figures.blade_commands import plot_certificate
+
+        data["plot"] = str(_save(plot_certificate(cert), args.plot))
+    _dump(data)
     return 0
 
 
@@ -605,8 +736,120 @@ def _sweep(args) -> int:
     path = result.write(args.out)
     errors = sum(1 for e in result.column("error") if e)
     print(path)
+    if args.plot is not None:
+        from .figures.blade_commands import plot_sweep_table
+
+        print(_save(plot_sweep_table(result), args.plot))
     print(f"certified {result.n_certified} of {len(result)} points" + (f" ({errors} failed: see the error column)"
                                                                          if errors else ""))
+    return 0
+
+
+# ---------------------------------------------------------------------- modes and simulate
+
+
+def _save(fig, path: Path) -> Path:
+    """Save a figure (PNG or SVG, by the suffix) where asked, the folder created."""
+    from .figures.blade_commands import save_figure
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    return save_figure(fig, path)
+
+
+def _write(rows: list[dict], path: Path) -> Path:
+    from .figures.blade_commands import write_table
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    return write_table(rows, path)
+
+
+def _modes(args) -> int:
+    from .analysis.modes import fan_plot, floquet_modes
+
+    params, case = _blade(args.params, args.cg)
+    if args.rotor_speeds is not None:
+        speeds = sorted(set(args.rotor_speeds))
+    else:
+        ratios = args.rotor_speed_ratios or _number_list("--rotor-speed-ratios", "0.8:1.2:0.05")
+        speeds = [r * params.rotor_speed for r in sorted(set(ratios))]
+    mu = sorted(set(args.mu))
+    print(f"modes: {case['params']}, cg={case['cg']}, {len(speeds)} rotor speeds"
+          + ("" if args.no_floquet else f", {len(mu)} advance ratios ({args.condition})") + " ...",
+          file=sys.stderr, flush=True)
+    fan = fan_plot(params, speeds, air=not args.vacuum)
+    floquet = None if args.no_floquet else floquet_modes(params, mu, condition=args.condition)
+    lost = [f"rotor speed {w:.4g} rad/s: {m}" for w, m in zip(fan.rotor_speed, fan.messages) if m]
+    if floquet is not None:
+        lost += [f"mu = {m:g}: {msg}" for m, msg in zip(floquet.mu, floquet.messages) if msg]
+    _warn(lost)
+    if not fan.found.any() and (floquet is None or not floquet.found.any()):
+        raise RuntimeError("no modes found at any rotor speed or advance ratio (see the warnings)")
+    rows = fan.export() + ([] if floquet is None else floquet.export())
+    data: dict[str, Any] = {"case": {**case, "rotor_speed_rad_s": _sig(params.rotor_speed),
+                                     "condition": None if floquet is None else args.condition},
+                            "units": "frequency per rev and Hz, growth rate per rev, damping ratio -"}
+    nominal = [i for i, w in enumerate(fan.rotor_speed) if math.isclose(w, params.rotor_speed, rel_tol=1e-9)]
+    if nominal and fan.found[nominal[0]]:
+        i = nominal[0]
+        data["hover_modes"] = [{"mode": n, "frequency_per_rev": _sig(m.frequency),
+                                "frequency_hz": _sig(m.frequency * params.rotor_speed / (2 * math.pi)),
+                                "growth_rate_per_rev": _sig(m.growth_rate),
+                                "damping_ratio": _sig(m.damping_ratio)} for n, m in zip(fan.names(i), fan.modes[i])]
+    if floquet is not None:
+        data["floquet_stable"] = {f"{m:g}": bool(ok) for m, ok in zip(floquet.mu, floquet.stable)}
+    if args.out is None:
+        data["rows"] = [{k: (_sig(v) if isinstance(v, float) and math.isfinite(v) else
+                             None if isinstance(v, float) else v) for k, v in r.items()} for r in rows]
+    else:
+        data["table"] = str(_write(rows, args.out))
+    if args.plot is not None:
+        from .figures.blade_commands import plot_modes
+
+        data["plot"] = str(_save(plot_modes(fan, floquet), args.plot))
+    _dump(data)
+    return 0
+
+
+def _simulate(args) -> int:
+    from .analysis.disturbance import simulate_disturbance
+
+    params, case = _blade(args.params, args.cg)
+    cert = None
+    if args.certify:
+        from .analysis.certify import certify
+
+        print(f"certifying: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.condition} (quadratic) ...",
+              file=sys.stderr, flush=True)
+        cert = certify(params, args.mu, condition=args.condition, function="quadratic", n_psi=args.n_psi,
+                       n_sphere=args.n_sphere)
+    print(f"simulating: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.revs:g} revolutions ...",
+          file=sys.stderr, flush=True)
+    motion = simulate_disturbance(params, args.mu, args.disturb, args.revs, condition=args.condition,
+                                  certificate=cert)
+    dev = abs(motion.deviation_deg)
+    names = HINGE_SYMBOLS + tuple(f"{h}_rate" for h in HINGE_SYMBOLS)
+    data: dict[str, Any] = {
+        "case": {**case, "mu": motion.mu, "condition": motion.condition},
+        "disturbance": {n: {("deg" if i < 3 else "deg_per_s"): _sig(v)}
+                        for i, (n, v) in enumerate(zip(names, motion.disturbance)) if v != 0.0},
+        "start_scaled_norm": _sig(motion.start_norm),
+        "revolutions": _sig(motion.revolutions[-1]),
+        "escaped": motion.escaped,
+        "largest_deviation_deg": {h: _sig(dev[:, i].max()) for i, h in enumerate(HINGE_SYMBOLS)},
+        "final_deviation_deg": {h: _sig(dev[-1, i]) for i, h in enumerate(HINGE_SYMBOLS)},
+    }
+    if cert is not None:
+        data["certified"] = bool(cert.certified)
+        data["bound_deg"] = (None if motion.bound_deg is None else
+                             {h: _sig(motion.bound_deg[i]) for i, h in enumerate(HINGE_SYMBOLS)})
+        data["inside_start_region"] = motion.inside_start_region
+    if args.out is not None:
+        data["table"] = str(_write(motion.export(), args.out))
+    if args.plot is not None:
+        from .figures.blade_commands import plot_disturbed_motion
+
+        data["plot"] = str(_save(plot_disturbed_motion(motion), args.plot))
+    _dump(data)
     return 0
 
 
@@ -629,7 +872,10 @@ def _figures(args) -> int:
 
 
 _COMMANDS: dict[str, Callable[[Any], int]] = {"analyse": _analyse, "certify": _certify, "sweep": _sweep,
-                                              "figures": _figures}
+                                              "modes": _modes, "simulate": _simulate, "figures": _figures}
+
+#: Commands that draw with matplotlib: the Agg backend (files only, no display) is chosen first.
+_DRAWING = ("modes", "simulate", "figures")
 
 
 def _one_blas_thread() -> None:
@@ -645,10 +891,16 @@ def _one_blas_thread() -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Entry point; returns the exit status."""
+    """Entry point of ``python -m rotorlyap`` and of the ``rotorlyap`` command; returns the exit status
+    (bad arguments exit at once with status 2, through ``argparse``)."""
     _one_blas_thread()
-    parser = build_parser()
+    prog = "rotorlyap" if Path(sys.argv[0]).name == "rotorlyap" else "python -m rotorlyap"
+    parser = build_parser(prog)
     args = parser.parse_args(argv)
+    if args.command in _DRAWING or getattr(args, "plot", None) is not None:
+        import matplotlib
+
+        matplotlib.use("Agg")
     try:
         return _COMMANDS[args.command](args)
     except BrokenPipeError:  # output piped into a program that stopped reading (e.g. head)
@@ -656,5 +908,5 @@ def main(argv: list[str] | None = None) -> int:
     except (ValueError, TypeError, RuntimeError, ImportError, OSError) as exc:
         # bad values (a parameter file, a grid), a trim that does not converge, a missing optional
         # dependency, a table that cannot be written
-        print(f"python -m rotorlyap {args.command}: error: {exc}", file=sys.stderr)
+        print(f"{prog} {args.command}: error: {exc}", file=sys.stderr)
         return 1

@@ -281,7 +281,8 @@ def _mac(U: np.ndarray, V: np.ndarray) -> np.ndarray:
 
 
 def floquet_sweep(params: BladeParameters, mu_values, *, steady: str = "periodic", case: str = "",
-                  n_steps: int = DEFAULT_N_STEPS, motions: dict | None = None) -> FloquetSweep:
+                  n_steps: int = DEFAULT_N_STEPS, motions: dict | None = None,
+                  blades: dict | None = None) -> FloquetSweep:
     """Floquet modes along a grid of advance ratios, followed by continuity from hover.
 
     Parameters
@@ -298,6 +299,10 @@ def floquet_sweep(params: BladeParameters, mu_values, *, steady: str = "periodic
         ``{mu: motion}`` periodic motions already computed (any steady motion
         :func:`~rotorlyap.model.steady.as_steady_motion` takes; others are computed); a string
         or an exception as the value records a failure (no periodic motion) without retrying.
+    blades : dict, optional
+        ``{mu: BladeParameters}`` the blade at an advance ratio where it is not ``params`` (a trim's
+        controls, shaft tilt and inflow: ``ForwardFlightTrim.params``); its motion then comes from
+        ``motions``.
 
     Returns
     -------
@@ -321,7 +326,8 @@ def floquet_sweep(params: BladeParameters, mu_values, *, steady: str = "periodic
         if isinstance(motion, (str, Exception)):  # a failure recorded by the caller
             pt = _not_found(float(m_), steady, str(motion))
         else:
-            pt = blade_floquet(params, m_, steady=steady if motion is None else motion, n_steps=n_steps)
+            here = params if blades is None else blades.get(float(m_), params)
+            pt = blade_floquet(here, m_, steady=steady if motion is None else motion, n_steps=n_steps)
         msgs.append(pt.message)
         if not pt.found:
             continue
