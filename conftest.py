@@ -18,6 +18,12 @@ explains the design.
    worker processes each). The numbers do not depend on it (a compiled kernel computes
    each state alone, :mod:`rotorlyap.jit`; a committed output prints only the digits that
    survive another BLAS, "What a committed output may print" in the README).
+4. **The longest files first**: pytest-xdist hands each worker whole files (``--dist
+   loadfile``) in the order of the collection (``--no-loadscope-reorder``: not by number of
+   tests, which started the one-test falsifier files of half a minute each last); the two
+   chapters of minutes first, then the other notebooks and the files with a ``slow`` test, the
+   quick files last, so that both workers finish together (the order of the tests within a
+   file is kept).
 """
 
 from __future__ import annotations
@@ -95,12 +101,32 @@ _STORED: list[str] = []
 _TREE = notebook_execution.fingerprint()  # the package the notebooks of this run execute
 
 
+#: The two longest files of the test run (chapters 7 and 8, minutes each): the first two a
+#: worker starts (point 4).
+LONGEST_FIRST = ("book/07_validation.ipynb", "book/08_trimmed_flight.ipynb")
+
+
+def _file_rank(item, slow_files: set) -> int:
+    """Point 4: 0 for :data:`LONGEST_FIRST`, 1 for the other notebooks and the files with a
+    ``slow`` test, 2 for the rest."""
+    path = item.nodeid.split("::")[0]
+    if path in LONGEST_FIRST:
+        return 0
+    return 1 if path.endswith(".ipynb") or path in slow_files else 2
+
+
 def pytest_collection_modifyitems(session, config, items):
     cell_class = _nbval_cell_class()
     for item in items:
         if cell_class is not None and isinstance(item, cell_class):
             nbfile = item.parent
             nbfile.skip_compare = tuple(dict.fromkeys(tuple(nbfile.skip_compare) + notebook_execution.IMAGE_MIMES))
+    # point 4: the longest files first, the quick ones last (pytest-xdist hands out whole files
+    # in this order, --no-loadscope-reorder in pyproject.toml), so that the run does not end
+    # with one worker busy on a long file while the other waits
+    slow_files = {item.nodeid.split("::")[0] for item in items if item.get_closest_marker("slow")}
+    order = {id(item): (_file_rank(item, slow_files), k) for k, item in enumerate(items)}
+    items.sort(key=lambda item: order[id(item)])
 
 
 @pytest.hookimpl(hookwrapper=True)
