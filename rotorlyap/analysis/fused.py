@@ -64,22 +64,36 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
     n = y.shape[1]
     N = P_grid.shape[0]
     npair = n * (n + 1) // 2
-    # P(psi) and P'(psi) of each state, the upper triangle: interpolated once, used twice (W on
-    # the ray, W' at its point) with the operations of _hermite_forms
-    Pm = np.empty((m, npair))
-    Dm = np.empty((m, npair))
-    x = np.empty((m, n))
-    z = np.empty(n)
+    # what depends on the azimuth alone (P, P', xi, xi') once per run of equal azimuths (the
+    # searches put the states of one azimuth together): each run's values are those every one of
+    # its states would get, so the same numbers as state by state
+    run = np.empty(m, np.int64)
+    nu = 0
     for i in range(m):
-        j, j1, a0, b0, a1, b1, da0, db0, da1, db1 = _hermite_weights(psi[i], period, N)
+        if i == 0 or psi[i] != psi[i - 1]:
+            nu += 1
+        run[i] = nu - 1
+    pu = np.empty(nu)
+    for i in range(m):
+        pu[run[i]] = psi[i]
+    # P(psi) and P'(psi), the upper triangle: interpolated once, used twice (W on the ray, W' at
+    # its point) with the operations of _hermite_forms
+    Pm = np.empty((nu, npair))
+    Dm = np.empty((nu, npair))
+    for q in range(nu):
+        j, j1, a0, b0, a1, b1, da0, db0, da1, db1 = _hermite_weights(pu[q], period, N)
         k = 0
         for r in range(n):
             for c in range(r, n):
-                Pm[i, k] = (a0 * P_grid[j, r, c] + b0 * D_grid[j, r, c]
+                Pm[q, k] = (a0 * P_grid[j, r, c] + b0 * D_grid[j, r, c]
                             + a1 * P_grid[j1, r, c] + b1 * D_grid[j1, r, c])
-                Dm[i, k] = (da0 * P_grid[j, r, c] + db0 * D_grid[j, r, c]
+                Dm[q, k] = (da0 * P_grid[j, r, c] + db0 * D_grid[j, r, c]
                             + da1 * P_grid[j1, r, c] + db1 * D_grid[j1, r, c])
                 k += 1
+    x = np.empty((m, n))
+    z = np.empty(n)
+    for i in range(m):
+        q = run[i]
         s = 0.0
         for c in range(n):  # numpy's norm of a row of six: the squares summed in order
             s += y[i, c] * y[i, c]
@@ -93,9 +107,9 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
             zr = z[r]
             for c in range(r, n):
                 if r == c:
-                    acc += Pm[i, k] * zr * z[c]
+                    acc += Pm[q, k] * zr * z[c]
                 else:
-                    acc += 2.0 * Pm[i, k] * zr * z[c]
+                    acc += 2.0 * Pm[q, k] * zr * z[c]
                 k += 1
         w_unit[i] = acc
         rc = bound
@@ -106,33 +120,34 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
         for c in range(n):
             x[i, c] = ((y[i, c] / d) * ri) * scales[c]
     # W' at x, as _quadratic_rate computes it
-    xi = np.empty((m, n))
-    dxi = np.empty((m, n))
-    _hermite_rows(psi, values, slopes, False, xi)
-    _hermite_rows(psi, values, slopes, True, dxi)
+    xi = np.empty((nu, n))
+    dxi = np.empty((nu, n))
+    _hermite_rows(pu, values, slopes, False, xi)
+    _hermite_rows(pu, values, slopes, True, dxi)
     zs = np.empty((m, n))
     for i in range(m):
         for c in range(n):
-            zs[i, c] = xi[i, c] + x[i, c]
+            zs[i, c] = xi[run[i], c] + x[i, c]
     h = np.empty((m, n))
     _rhs_block_range(psi, zs, ctrl, P, sc, st, tab, h, 0, m)
     yy = np.empty(n)
     fy = np.empty(n)
     for i in range(m):
+        q = run[i]
         for c in range(n):
             yy[c] = x[i, c] / fscales[c]
-            fy[c] = (h[i, c] - dxi[i, c]) / fscales[c]
+            fy[c] = (h[i, c] - dxi[q, c]) / fscales[c]
         acc_d = 0.0
         k = 0
         for r in range(n):
             xr = yy[r]
             for c in range(r, n):
-                p = Pm[i, k]
+                p = Pm[q, k]
                 xc = yy[c]
                 if r == c:
-                    acc_d += Dm[i, k] * xr * xc + 2.0 * p * xr * fy[c]
+                    acc_d += Dm[q, k] * xr * xc + 2.0 * p * xr * fy[c]
                 else:
-                    acc_d += 2.0 * (Dm[i, k] * xr * xc + p * (xr * fy[c] + xc * fy[r]))
+                    acc_d += 2.0 * (Dm[q, k] * xr * xc + p * (xr * fy[c] + xc * fy[r]))
                 k += 1
         out[i] = acc_d
 

@@ -906,8 +906,9 @@ def _sweep_azimuth(fun: Function, value, psi, y, period: float, n_sweep: int, n_
             v = np.repeat(np.asarray(fun(np.full(idx.size, grid[0]), y[idx]), dtype=float)[:, None],
                           n_sweep, axis=1)
             fun.skip(idx.size * (n_sweep - 1))
-        else:
-            v = np.asarray(fun(np.tile(grid, idx.size), np.repeat(y[idx], n_sweep, axis=0)), dtype=float)
+        else:  # azimuth by azimuth (a kernel computes what depends on it alone once for them)
+            v = np.asarray(fun(np.repeat(grid, idx.size), np.tile(y[idx], (n_sweep, 1))),
+                           dtype=float).reshape(n_sweep, idx.size).T
         v = v.reshape(idx.size, n_sweep)
         j = np.argmax(v, axis=1)
         new_v[idx], new_p[idx] = v[np.arange(idx.size), j], grid[j]

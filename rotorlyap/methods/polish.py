@@ -113,8 +113,12 @@ def ascend(fun: Callable[[np.ndarray, np.ndarray], np.ndarray], z0: np.ndarray, 
     def value_and_gradient(Z: np.ndarray, rows: np.ndarray):
         """Minus ``fun`` and its central-difference gradient at the rows ``Z`` (k, d)."""
         k = Z.shape[0]
-        Zall = np.concatenate([Z[None], Z[None] + steps[:, None], Z[None] - steps[:, None]]).reshape(-1, d)
-        v = -np.asarray(fun(Zall, np.tile(rows, 2 * d + 1)), dtype=float).reshape(2 * d + 1, k)
+        # start by start (its 2 d + 1 points together, most at its azimuth: a kernel computes what
+        # depends on the azimuth alone once for them); each point's value does not depend on its
+        # place in the batch
+        Zall = np.concatenate([Z[None], Z[None] + steps[:, None], Z[None] - steps[:, None]])
+        Zall = Zall.transpose(1, 0, 2).reshape(-1, d)
+        v = -np.asarray(fun(Zall, np.repeat(rows, 2 * d + 1)), dtype=float).reshape(k, 2 * d + 1).T
         return v[0], ((v[1:d + 1] - v[d + 1:]) / (2 * _H)).T
 
     def projected_gradient(zz, g, lo, hi):  # L-BFGS-B's: the step -g projected on the box

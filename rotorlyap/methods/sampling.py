@@ -271,8 +271,15 @@ def refine_extremum(
                 up.append(ua)
                 pp.append(pa)
                 rp.append(np.where(free_rho_mask[act], ra + s * h * width[act], ra))
-        vals = evaluate(np.concatenate(pp), np.concatenate(rp), np.concatenate(up), act)
-        vals = vals.reshape(2 * n_var, k)
+        # evaluated candidate by candidate (the 2 n_var points of a candidate together, most of
+        # them at its azimuth: a kernel computes what depends on the azimuth alone once for them)
+        # and put back perturbation by perturbation: each point's value does not depend on its
+        # place in the batch
+        nv = 2 * n_var
+        pp = np.concatenate(pp).reshape(nv, k).T.reshape(-1)
+        rp = np.concatenate(rp).reshape(nv, k).T.reshape(-1)
+        up = np.concatenate(up).reshape(nv, k, n).transpose(1, 0, 2).reshape(-1, n)
+        vals = evaluate(pp, rp, up, act).reshape(k, nv).T
         grad = (vals[0::2] - vals[1::2]) / (2 * h)  # (n_var, k)
         g_u = grad[:n].T
         g_u = g_u - np.sum(g_u * ua, axis=1, keepdims=True) * ua  # tangential part
