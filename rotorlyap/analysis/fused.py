@@ -27,46 +27,19 @@ from ..jit import jit
 
 # the kernels joined here are the model's and the method's own (private to their modules: this
 # module is their one other caller)
-from ..methods.periodic_lyapunov import _hermite_forms, _hermite_weights
+from ..methods.periodic_lyapunov import _hermite_weights
 from ..model.compiled import _controls, _rhs_block_range
 from ..model.steady import _hermite_rows
 
 __all__ = ["fused_arguments", "quadratic_rate_about_tabulated", "quadratic_rate_on_rays"]
 
 
-@jit(error_model="numpy")
-def _quadratic_rate(psi, x, scales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid, period, out):
-    m = x.shape[0]
-    xi = np.empty((m, 6))
-    dxi = np.empty((m, 6))
-    _hermite_rows(psi, values, slopes, False, xi)
-    _hermite_rows(psi, values, slopes, True, dxi)
-    z = np.empty((m, 6))
-    for i in range(m):
-        for c in range(6):
-            z[i, c] = xi[i, c] + x[i, c]
-    h = np.empty((m, 6))
-    _rhs_block_range(psi, z, ctrl, P, sc, st, tab, h, 0, m)
-    y = np.empty((m, 6))
-    fy = np.empty((m, 6))
-    for i in range(m):
-        for c in range(6):
-            y[i, c] = x[i, c] / scales[c]
-            fy[i, c] = (h[i, c] - dxi[i, c]) / scales[c]
-    w = np.empty(m)
-    _hermite_forms(psi, y, fy, P_grid, D_grid, period, True, w, out)
-
-
-@jit(error_model="numpy")
-def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid,
-              period, w_unit, out):
-    m = y.shape[0]
-    n = y.shape[1]
-    N = P_grid.shape[0]
-    npair = n * (n + 1) // 2
-    # what depends on the azimuth alone (P, P', xi, xi') once per run of equal azimuths (the
-    # searches put the states of one azimuth together): each run's values are those every one of
-    # its states would get, so the same numbers as state by state
+@jit
+def _azimuth_runs(psi):
+    """Runs of equal consecutive azimuths: ``(run, pu)``, the run of each state and the azimuth
+    of each run (the searches put the states of one azimuth together; what depends on the
+    azimuth alone is then computed once per run, with the numbers each state would get)."""
+    m = psi.shape[0]
     run = np.empty(m, np.int64)
     nu = 0
     for i in range(m):
@@ -76,11 +49,17 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
     pu = np.empty(nu)
     for i in range(m):
         pu[run[i]] = psi[i]
-    # P(psi) and P'(psi), the upper triangle: interpolated once, used twice (W on the ray, W' at
-    # its point) with the operations of _hermite_forms
-    Pm = np.empty((nu, npair))
-    Dm = np.empty((nu, npair))
-    for q in range(nu):
+    return run, pu
+
+
+@jit
+def _forms_per_run(pu, P_grid, D_grid, period, n):
+    """``P(psi)`` and ``P'(psi)`` at each azimuth of ``pu``, the upper triangle row by row
+    (``n (n + 1) / 2`` entries), with the operations of ``periodic_lyapunov._hermite_forms``."""
+    N = P_grid.shape[0]
+    Pm = np.empty((pu.shape[0], n * (n + 1) // 2))
+    Dm = np.empty((pu.shape[0], n * (n + 1) // 2))
+    for q in range(pu.shape[0]):
         j, j1, a0, b0, a1, b1, da0, db0, da1, db1 = _hermite_weights(pu[q], period, N)
         k = 0
         for r in range(n):
@@ -90,6 +69,64 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
                 Dm[q, k] = (da0 * P_grid[j, r, c] + db0 * D_grid[j, r, c]
                             + da1 * P_grid[j1, r, c] + db1 * D_grid[j1, r, c])
                 k += 1
+    return Pm, Dm
+
+
+@jit
+def _rate_of_forms(x, h, dxi, run, fscales, Pm, Dm, out):
+    """``W' = y^T P' y + 2 y^T P f_y`` (``y = x / a``, ``f_y = (h - xi') / a``) of each state
+    from its run's ``P`` and ``P'`` (:func:`_forms_per_run`), with the operations of
+    ``periodic_lyapunov._hermite_forms``."""
+    n = x.shape[1]
+    yy = np.empty(n)
+    fy = np.empty(n)
+    for i in range(x.shape[0]):
+        q = run[i]
+        for c in range(n):
+            yy[c] = x[i, c] / fscales[c]
+            fy[c] = (h[i, c] - dxi[q, c]) / fscales[c]
+        acc_d = 0.0
+        k = 0
+        for r in range(n):
+            xr = yy[r]
+            for c in range(r, n):
+                p = Pm[q, k]
+                xc = yy[c]
+                if r == c:
+                    acc_d += Dm[q, k] * xr * xc + 2.0 * p * xr * fy[c]
+                else:
+                    acc_d += 2.0 * (Dm[q, k] * xr * xc + p * (xr * fy[c] + xc * fy[r]))
+                k += 1
+        out[i] = acc_d
+
+
+@jit(error_model="numpy")
+def _quadratic_rate(psi, x, scales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid, period, out):
+    m = x.shape[0]
+    n = x.shape[1]
+    run, pu = _azimuth_runs(psi)
+    xi = np.empty((pu.shape[0], n))
+    dxi = np.empty((pu.shape[0], n))
+    _hermite_rows(pu, values, slopes, False, xi)
+    _hermite_rows(pu, values, slopes, True, dxi)
+    z = np.empty((m, n))
+    for i in range(m):
+        for c in range(n):
+            z[i, c] = xi[run[i], c] + x[i, c]
+    h = np.empty((m, n))
+    _rhs_block_range(psi, z, ctrl, P, sc, st, tab, h, 0, m)
+    Pm, Dm = _forms_per_run(pu, P_grid, D_grid, period, n)
+    _rate_of_forms(x, h, dxi, run, scales, Pm, Dm, out)
+
+
+@jit(error_model="numpy")
+def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid,
+              period, w_unit, out):
+    m = y.shape[0]
+    n = y.shape[1]
+    # P and P' once per run of equal azimuths, used twice (W on the ray, W' at its point)
+    run, pu = _azimuth_runs(psi)
+    Pm, Dm = _forms_per_run(pu, P_grid, D_grid, period, n)
     x = np.empty((m, n))
     z = np.empty(n)
     for i in range(m):
@@ -120,8 +157,8 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
         for c in range(n):
             x[i, c] = ((y[i, c] / d) * ri) * scales[c]
     # W' at x, as _quadratic_rate computes it
-    xi = np.empty((nu, n))
-    dxi = np.empty((nu, n))
+    xi = np.empty((pu.shape[0], n))
+    dxi = np.empty((pu.shape[0], n))
     _hermite_rows(pu, values, slopes, False, xi)
     _hermite_rows(pu, values, slopes, True, dxi)
     zs = np.empty((m, n))
@@ -130,26 +167,7 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
             zs[i, c] = xi[run[i], c] + x[i, c]
     h = np.empty((m, n))
     _rhs_block_range(psi, zs, ctrl, P, sc, st, tab, h, 0, m)
-    yy = np.empty(n)
-    fy = np.empty(n)
-    for i in range(m):
-        q = run[i]
-        for c in range(n):
-            yy[c] = x[i, c] / fscales[c]
-            fy[c] = (h[i, c] - dxi[q, c]) / fscales[c]
-        acc_d = 0.0
-        k = 0
-        for r in range(n):
-            xr = yy[r]
-            for c in range(r, n):
-                p = Pm[q, k]
-                xc = yy[c]
-                if r == c:
-                    acc_d += Dm[q, k] * xr * xc + 2.0 * p * xr * fy[c]
-                else:
-                    acc_d += 2.0 * (Dm[q, k] * xr * xc + p * (xr * fy[c] + xc * fy[r]))
-                k += 1
-        out[i] = acc_d
+    _rate_of_forms(x, h, dxi, run, fscales, Pm, Dm, out)
 
 
 def quadratic_rate_on_rays(psi: np.ndarray, y: np.ndarray, level: float, bound: float, scales: np.ndarray,
