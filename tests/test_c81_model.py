@@ -12,7 +12,6 @@ parameter file names its C81 file and writes it back; contradictory combinations
 from __future__ import annotations
 
 import dataclasses
-import math
 import re
 import warnings
 

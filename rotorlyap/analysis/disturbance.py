@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..conventions import DEFAULT_SCALES, HINGES, TWO_PI
-from ..methods.simulation import scaled_norm, simulate
+from ..methods.simulation import simulate
 from ..model.blade import Blade
 from ..model.forward_trim import TRIM_TARGETS, forward_flight_trim
 from ..model.parameters import BladeParameters

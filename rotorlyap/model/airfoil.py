@@ -45,9 +45,21 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["Airfoil", "LinearAirfoil", "NACA23012", "wrap_angle"]
+__all__ = ["Airfoil", "LinearAirfoil", "NACA23012", "grid_position", "wrap_angle"]
 
 _DEG = math.pi / 180.0
+
+
+def grid_position(alpha: ArrayLike, n: int) -> tuple[NDArray[np.intp], NDArray[np.float64]]:
+    """The interval ``i`` and the fraction ``u`` in it of each angle ``alpha`` (rad) on the
+    uniform periodic grid ``-pi + 2 pi k / n`` of a tabulated section: its coefficient is
+    ``v[i] + u * d[i]`` (node values ``v``, increments ``d`` to the next node). The operations
+    the compiled kernels repeat (:mod:`rotorlyap.model.compiled`), shared by
+    :class:`Airfoil` and :class:`rotorlyap.model.c81.C81Section`."""
+    u = np.mod(np.asarray(alpha, dtype=np.float64) + math.pi, 2.0 * math.pi)
+    u *= n / (2.0 * math.pi)
+    i = np.minimum(u.astype(np.intp), n - 1)  # u == n only through rounding
+    return i, u - i
 
 
 def wrap_angle(alpha: ArrayLike) -> NDArray[np.float64]:
@@ -399,11 +411,7 @@ class Airfoil:
         """
         if not self._table:
             return self.exact_coefficients(alpha)
-        n = self.table_size
-        u = np.mod(np.asarray(alpha, dtype=np.float64) + math.pi, 2.0 * math.pi)
-        u *= n / (2.0 * math.pi)
-        i = np.minimum(u.astype(np.intp), n - 1)  # u == n only through rounding
-        u = u - i
+        i, u = grid_position(alpha, self.table_size)
         (v_l, d_l), (v_d, d_d), (v_m, d_m) = self._table
         cl = v_l[i] + u * d_l[i]
         cd = v_d[i] + u * d_d[i]

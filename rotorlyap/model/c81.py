@@ -129,7 +129,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .airfoil import wrap_angle
+from .airfoil import grid_position, wrap_angle
 from .compressibility import THICKNESS_RATIO
 
 __all__ = [
@@ -769,17 +769,6 @@ def _uniform_table(blk: C81Block, n: int) -> tuple[FloatArray, FloatArray]:
     return _readonly(v), _readonly(d)
 
 
-def _lookup(alpha: FloatArray, n: int, v: FloatArray, d: FloatArray) -> FloatArray:
-    """Linear interpolation on the uniform periodic grid of ``n`` intervals: the operations, in
-    order, of :meth:`rotorlyap.model.airfoil.Airfoil.coefficients` (so the compiled kernels,
-    which repeat them, agree to round-off)."""
-    u = np.mod(np.asarray(alpha, dtype=np.float64) + math.pi, 2.0 * math.pi)
-    u *= n / (2.0 * math.pi)
-    i = np.minimum(u.astype(np.intp), n - 1)  # u == n only through rounding
-    u = u - i
-    return v[i] + u * d[i]
-
-
 def _mach_blend(blk: C81Block, mach: FloatArray, cols: list[FloatArray]) -> FloatArray:
     """Linear in the Mach number between the columns ``cols`` (one per Mach number of the
     block), the Mach number clipped to the block's range."""
@@ -968,12 +957,14 @@ class C81Section:
             al = np.asarray(alpha, dtype=np.float64)
             if np.ndim(mach) and np.shape(mach) != al.shape:
                 al = np.broadcast_arrays(al, np.asarray(mach, dtype=np.float64))[0]
-            return tuple(_lookup(al, n, v[:, 0], d[:, 0]) for v, d in self._grid)  # type: ignore[return-value]
+            i, u = grid_position(al, n)
+            return tuple(v[i, 0] + u * d[i, 0] for v, d in self._grid)  # type: ignore[return-value]
         al, m = np.broadcast_arrays(np.asarray(alpha, dtype=np.float64), np.asarray(mach, dtype=np.float64))
+        i, u = grid_position(al, n)
         out = []
         for key, (v, d) in zip(_BLOCKS, self._grid):
             blk = getattr(self.table, key)
-            cols = [_lookup(al, n, v[:, j], d[:, j]) for j in range(blk.mach.size)]
+            cols = [v[i, j] + u * d[i, j] for j in range(blk.mach.size)]
             out.append(_mach_blend(blk, m, cols))
         return out[0], out[1], out[2]
 
