@@ -249,6 +249,19 @@ def test_parameter_file_names_a_c81_file_beside_it_and_writes_it_back(tmp_path):
     assert _read(out / "thin.toml") == thin
 
 
+def test_a_section_written_twice_beside_its_own_rounded_file_is_kept(tmp_path):
+    """A table with more digits than a C81 file prints: the first to_file writes it rounded (a
+    warning says so); writing the same blade again finds that file holding what it would write,
+    keeps it, and the second parameter file reads back the same blade as the first."""
+    sec = C81Section(table_from_section(TABLE_I_AIRFOIL, name="unrounded"), file_name="u.c81")
+    p = dataclasses.replace(_puma(), airfoil=sec)
+    with pytest.warns(UserWarning, match="rounded"):
+        p.to_file(tmp_path / "a.toml")
+    with pytest.warns(UserWarning, match="rounded"):
+        p.to_file(tmp_path / "b.toml")
+    assert _read(tmp_path / "a.toml") == _read(tmp_path / "b.toml")
+
+
 def test_parameter_file_errors_name_the_missing_file_and_the_clash(tmp_path):
     """A missing C81 file: FileNotFoundError with the path looked for; a C81 file whose table is
     bad: the parameter file, the C81 file and its line; writing beside an existing file holding

@@ -220,9 +220,10 @@ def _c81_to(value: C81Section, path: Path) -> Any:
     name = Path(value.file_name).name if value.file_name else path.stem + C81_SUFFIX
     target = path.parent / name
     text = write_c81(value.table)
+    written = read_c81(text)  # the table as the file holds it (rounded to its printed decimals)
     if target.exists():
         try:
-            same = read_c81(target) == value.table
+            same = read_c81(target) == written
         except (OSError, ValueError):
             same = False
         if not same:
@@ -231,7 +232,7 @@ def _c81_to(value: C81Section, path: Path) -> Any:
                              f"(dataclasses.replace(section, file_name=...))")
     else:
         target.write_text(text, encoding="ascii", newline="\n")
-    if read_c81(text) != value.table:
+    if written != value.table:
         warnings.warn(f"airfoil: the table {value.name!r} written to {target} is rounded to the printed "
                       f"decimals of a C81 file (coefficients within 5e-5, rotorlyap.model.c81.write_c81): "
                       f"the parameter file reads back this rounded table", UserWarning, stacklevel=4)
