@@ -930,18 +930,21 @@ def _forensic_case(task: tuple) -> list:
 def _forensic_cell(choice: dict, case: str, mu_values, n_psi: int, memo: dict) -> tuple:
     """One case of a row: hover stable, first mu, first side, last side, matches.
 
-    ``memo`` keeps the trims and verdicts of earlier rows by their inputs (the blade's
-    parameters, the advance ratio, the trim's target, the function and the reading): many
-    combinations share them (every condition has the same hover, both functions the same trims).
+    ``memo`` keeps the trims, quadratic functions and verdicts of earlier rows by their inputs
+    (the blade's parameters, the advance ratio, the trim's target, the function and the
+    reading): many combinations share them (every condition has the same hover, both functions
+    the same trims, both readings the same quadratic function). The advance ratios are taken in
+    order up to the first flagged one, then the last: the row needs no other.
     """
     p = _forensic_params(case, choice)
     lyap = quadratic_function if choice["function"] == "quadratic" else None
     tests = PAPER_TEST_DISTURBANCES if choice["reading"] == "practical" else None
-    bad_rows, hover_ok = [], False
+    cond = choice["condition"]
     psi = TWO_PI * np.arange(n_psi) / n_psi
-    for mu in mu_values:
-        mu = float(mu)
-        cond = choice["condition"]
+
+    def flagged(mu: float):
+        """The azimuths flagged at ``mu`` (bool array), None (no steady motion) or a message;
+        and the verdict (None without one)."""
         try:
             if mu == 0.0 or cond.startswith("paper"):
                 # the collective is left to the hover trim, whose equilibrium is kept
@@ -957,30 +960,43 @@ def _forensic_cell(choice: dict, case: str, mu_values, n_psi: int, memo: dict) -
 
                 params, steady = _remembered(memo, trim_key, trimmed, TrimError)
             key = ("verdict", params, mu, trim_key, choice["function"], choice["reading"], n_psi)
+            fun = lyap
+            if lyap is not None:
+                # both readings of a quadratic function share its periodic Lyapunov solve
+                def fun(blade, motion, fkey=("quadratic", params, mu, trim_key)):
+                    return _remembered(memo, fkey, lambda: quadratic_function(blade, motion),
+                                       NotAsymptoticallyStableError)
             r = _remembered(memo, key, lambda: blade_stability(
-                params, mu, lyapunov=lyap, steady=steady, n_psi=n_psi, test_disturbances=tests),
+                params, mu, lyapunov=fun, steady=steady, n_psi=n_psi, test_disturbances=tests),
                 NotAsymptoticallyStableError)
         except TrimError:
-            bad_rows.append(None)
-            continue
+            return None, None
         except NotAsymptoticallyStableError:
-            bad_rows.append("no quadratic function")
-            continue
-        if mu == 0.0:
-            hover_ok = bool(np.all(r.stable))
+            return "no quadratic function", None
         cat = _category(r)
-        bad_rows.append((cat == 1) | (cat == 3))
+        return (cat == 1) | (cat == 3), r
+
+    mus = [float(mu) for mu in mu_values]
+    hover, r = flagged(mus[0])
+    hover_ok = r is not None and bool(np.all(r.stable))
+    if r is not None:
         psi = np.asarray(r.psi)
-    first_mu, first_side = float("nan"), "none"
-    for mu, bad in zip(mu_values[1:], bad_rows[1:]):
+    first_mu, first_side, bad, mu = float("nan"), "none", hover, mus[0]
+    for mu in mus[1:]:
+        bad, r = flagged(mu)
+        if r is not None:
+            psi = np.asarray(r.psi)
         if bad is None or isinstance(bad, str):
-            first_mu, first_side = float(mu), "no steady motion" if bad is None else bad
+            first_mu, first_side = mu, "no steady motion" if bad is None else bad
             break
         if bad.any():
-            first_mu, first_side = float(mu), _side(bad, psi)
+            first_mu, first_side = mu, _side(bad, psi)
             break
-    last = bad_rows[-1]
-    last_side = "no steady motion" if last is None else last if isinstance(last, str) else _side(last, psi)
+    if mu != mus[-1]:
+        bad, r = flagged(mus[-1])
+        if r is not None:
+            psi = np.asarray(r.psi)
+    last_side = "no steady motion" if bad is None else bad if isinstance(bad, str) else _side(bad, psi)
     match = hover_ok and first_side == "retreating" and last_side == "both"
     return (hover_ok, first_mu, first_side, last_side, match)
 
