@@ -5,8 +5,9 @@ function (:mod:`rotorlyap.methods.periodic_lyapunov`) and of the tabulated stead
 (:mod:`rotorlyap.model.steady`) are plain Python loops over states, written so that numba
 compiles them to machine code (``nopython`` mode, cached on disk in ``__pycache__`` beside
 each module: only the first use on a machine compiles, a few seconds). Every kernel has a
-numpy twin that computes the same formulas, the reference of the tests. Kernels over large
-batches of independent states run on every core (:func:`jit_parallel`); each state is
+numpy twin that computes the same formulas, the reference of the tests. The blade's kernels
+run large batches of independent states on :func:`threads` threads (chunks of the batch on a
+thread pool, :mod:`rotorlyap.model.compiled`; the kernels release the GIL); each state is
 computed alone, so the numbers do not depend on the number of threads.
 
 Which path runs
@@ -23,21 +24,19 @@ from __future__ import annotations
 
 import os
 
-__all__ = ["KERNEL_MODES", "PARALLEL_MIN_STATES", "jit", "jit_parallel", "kernel_mode",
-           "numba_available", "prange", "threads", "use_compiled"]
+__all__ = ["KERNEL_MODES", "PARALLEL_MIN_STATES", "jit", "kernel_mode", "numba_available",
+           "threads", "use_compiled"]
 
 KERNEL_MODES = ("compiled", "numpy")
 """Allowed values of the environment variable ``ROTORLYAP_KERNEL``."""
 
 try:  # numba is a dependency (requirements.txt); the numpy path stays complete without it
     import numba as _numba
-    from numba import prange
 except ImportError:  # pragma: no cover - exercised only without numba
     _numba = None
-    prange = range
 
 PARALLEL_MIN_STATES = 2048
-"""Batches of at least this many states are split over the threads (:func:`jit_parallel`);
+"""Batches of at least this many states are split over the :func:`threads` threads;
 smaller ones run on one thread, where starting the threads would cost more than it saves."""
 
 
@@ -79,17 +78,7 @@ def jit(fn=None, **options):
     return _numba.njit(cache=True, nogil=True, **options)(fn)
 
 
-def jit_parallel(fn=None, **options):
-    """Compile ``fn``, whose outer loop is a ``prange``, for all threads (numba's ``parallel``
-    option; the number of threads is numba's, ``NUMBA_NUM_THREADS`` sets it), or return it
-    unchanged (a serial loop) when numba is not installed. ``options`` as in :func:`jit`."""
-    if fn is None:
-        return lambda f: jit_parallel(f, **options)
-    if _numba is None:  # pragma: no cover
-        return fn
-    return _numba.njit(cache=True, nogil=True, parallel=True, **options)(fn)
-
-
 def threads() -> int:
-    """Threads of the parallel kernels (1 without numba)."""
+    """Threads of the kernels over large batches (1 without numba): numba's number of threads,
+    which ``NUMBA_NUM_THREADS`` or :func:`numba.set_num_threads` set."""
     return 1 if _numba is None else int(_numba.get_num_threads())

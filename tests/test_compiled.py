@@ -141,6 +141,35 @@ def test_block_kernel_equals_one_state_kernel(label, changes, mu):
         np.testing.assert_array_equal(c[-1], b[-1])
 
 
+def test_threaded_batches_give_the_bits_of_one_thread(monkeypatch):
+    """A batch of at least PARALLEL_MIN_STATES states runs in chunks on the kernels' thread pool
+    (rotorlyap.model.compiled._run, here with two threads whatever NUMBA_NUM_THREADS says);
+    each state is computed alone, so rhs, W and W' of the energy function are the same bits as
+    with one thread, and an error raised in a chunk reaches the caller."""
+    from rotorlyap.jit import PARALLEL_MIN_STATES
+
+    params = replace(BladeParameters.table_i("neutral"), cyclic_cos=0.02, cyclic_sin=-0.03)
+    blade = Blade(params, 0.2)
+    xi = np.array([0.05, 0.01, 0.15, 0.0, 0.0, 0.0])
+    fun = energy_function(blade, xi)
+    rng = np.random.default_rng(5)
+    n = 2 * PARALLEL_MIN_STATES + 37  # chunks of unequal length
+    psi, z = _states(rng, n, 0.3)
+    results = []
+    for k in (1, 2):
+        monkeypatch.setattr(compiled, "threads", lambda k=k: k)
+        results.append((blade.rhs(psi, z), fun.W(psi, z), fun.dW(psi, z)))
+    for one, two in zip(*results):
+        np.testing.assert_array_equal(one, two)
+    assert any(key[1] == 2 for key in compiled._POOLS)  # the two-thread run used the pool
+
+    def failing(*args):
+        raise ZeroDivisionError("in a chunk")
+
+    with pytest.raises(ZeroDivisionError, match="in a chunk"):
+        compiled._run(failing, n, ())
+
+
 def test_vectorised_atan2_is_within_two_ulp():
     """The branch-free atan2 of the block kernels against the C library's: at most 2 ulp over
     random arguments of 12 decades, and exact at the zeros and axes (signs as C's atan2)."""

@@ -66,11 +66,13 @@ C81 sections (``compressibility = "table"``: the kernels have no Mach axis).
 from __future__ import annotations
 
 import math
+import os
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ..jit import PARALLEL_MIN_STATES, jit_parallel, prange, threads, use_compiled
+from ..jit import PARALLEL_MIN_STATES, threads, use_compiled
 from ..jit import jit as _jit
 from ._generated import blade_block as _block
 from ._generated import blade_scalar as _scalar
@@ -301,13 +303,6 @@ def _rhs_range(psi, z, ctrl, P, sc, st, tab, out, start, stop):
         out[i, 5] = acc[2]
 
 
-@jit_parallel
-def _rhs_parallel(psi, z, ctrl, P, sc, st, tab, out, n_chunks):
-    n = z.shape[0]
-    for c in prange(n_chunks):
-        _rhs_range(psi, z, ctrl, P, sc, st, tab, out, c * n // n_chunks, (c + 1) * n // n_chunks)
-
-
 @_jit
 def _potential_kernel(psi, q, ctrl, P, cyclic, out):
     """``out[i]`` = the generated ``potential_terms`` at ``psi[i]`` and hinge angles ``q[i]``."""
@@ -367,14 +362,6 @@ def _energy_rate_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out,
         out[i] = dW
 
 
-@jit_parallel
-def _energy_rate_parallel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, n_chunks):
-    n = x.shape[0]
-    for c in prange(n_chunks):
-        _energy_rate_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out,
-                           c * n // n_chunks, (c + 1) * n // n_chunks)
-
-
 @_jit
 def _energy_value_range(psi, x, xi, ps, ctrl, P, sc, out, start, stop):
     """The energy function's ``W`` (rotorlyap.analysis.functions.EnergyFunction.W) for the
@@ -402,13 +389,6 @@ def _energy_value_range(psi, x, xi, ps, ctrl, P, sc, out, start, stop):
         m2 = T[2] * xr0 + T[4] * xr1 + T[5] * xr2
         kin = 0.5 * om2 * ((m0 * xr0 + m1 * xr1) + m2 * xr2)
         out[i] = kin + pt[0] - ps[k, 0] - ((ps[k, 1] * x[i, 0] + ps[k, 2] * x[i, 1]) + ps[k, 3] * x[i, 2])
-
-
-@jit_parallel
-def _energy_value_parallel(psi, x, xi, ps, ctrl, P, sc, out, n_chunks):
-    n = x.shape[0]
-    for c in prange(n_chunks):
-        _energy_value_range(psi, x, xi, ps, ctrl, P, sc, out, c * n // n_chunks, (c + 1) * n // n_chunks)
 
 
 # --------------------------------------------------------------------------------------
@@ -713,13 +693,6 @@ def _rhs_block_range(psi, z, ctrl, P, sc, st, tab, out, start, stop):
             out[i0 + i, 5] = W[_A2 + i]
 
 
-@jit_parallel(error_model="numpy")
-def _rhs_block_parallel(psi, z, ctrl, P, sc, st, tab, out, n_chunks):
-    n = z.shape[0]
-    for c in prange(n_chunks):
-        _rhs_block_range(psi, z, ctrl, P, sc, st, tab, out, c * n // n_chunks, (c + 1) * n // n_chunks)
-
-
 @_jit(error_model="numpy")
 def _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, start, stop):
     """:func:`_energy_rate_range` by blocks of _B states (the states innermost, vectorised)."""
@@ -803,22 +776,36 @@ def _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant
             out[i0 + i] = W[_DW + i]
 
 
-@jit_parallel(error_model="numpy")
-def _energy_rate_block_parallel(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, n_chunks):
-    n = x.shape[0]
-    for c in prange(n_chunks):
-        _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out,
-                                 c * n // n_chunks, (c + 1) * n // n_chunks)
+def _run(kernel, n: int, args: tuple) -> None:
+    """Run a range kernel over ``n`` states: ``kernel(*args, 0, n)`` here below
+    PARALLEL_MIN_STATES states or with one thread, else in ``4 k`` chunks ``kernel(*args,
+    start, stop)`` on the ``k`` threads of :func:`_pool` (the kernels release the GIL; each
+    state is computed alone, so the numbers depend neither on the chunks nor on the threads).
 
-
-def _run(serial, parallel, n: int, args: tuple) -> None:
-    """Run a kernel over ``n`` states: ``serial(*args, 0, n)`` on one thread below
-    PARALLEL_MIN_STATES states, else ``parallel(*args, chunks)`` over every thread."""
+    Threads of this module rather than numba's ``parallel`` option: numba links a ``prange``
+    kernel again in every process that loads it from its cache (numba issue 8085), 1-2 s per
+    kernel, paid by every notebook kernel and worker process."""
     k = threads()
     if n < PARALLEL_MIN_STATES or k < 2:
-        serial(*args, 0, n)
-    else:
-        parallel(*args, 4 * k)
+        kernel(*args, 0, n)
+        return
+    m = 4 * k
+    pool = _pool(k)
+    futures = [pool.submit(kernel, *args, c * n // m, (c + 1) * n // m) for c in range(m)]
+    for f in futures:
+        f.result()
+
+
+_POOLS: dict = {}
+
+
+def _pool(k: int) -> ThreadPoolExecutor:
+    """The ``k``-thread pool of this process, made on first use (a forked child makes its own)."""
+    key = (os.getpid(), k)
+    pool = _POOLS.get(key)
+    if pool is None:
+        pool = _POOLS[key] = ThreadPoolExecutor(max_workers=k, thread_name_prefix="rotorlyap-kernel")
+    return pool
 
 
 # --------------------------------------------------------------------------------------
@@ -833,9 +820,9 @@ def rhs(eq: BladeEquations, data: KernelData, psi: FloatArray, z: FloatArray) ->
             z if z.flags.c_contiguous else np.ascontiguousarray(z),
             _controls(eq), data.P, data.scalars, data.stations, data.table, out)
     if data.block:
-        _run(_rhs_block_range, _rhs_block_parallel, n, args)
+        _run(_rhs_block_range, n, args)
     else:
-        _run(_rhs_range, _rhs_parallel, n, args)
+        _run(_rhs_range, n, args)
     return out
 
 
@@ -861,9 +848,9 @@ def energy_rate(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatA
             c(dxi, dtype=np.float64), c(ps, dtype=np.float64), _controls(eq), data.P,
             data.scalars, data.stations, data.table, bool(constant), out)
     if data.block:
-        _run(_energy_rate_block_range, _energy_rate_block_parallel, n, args)
+        _run(_energy_rate_block_range, n, args)
     else:
-        _run(_energy_rate_range, _energy_rate_parallel, n, args)
+        _run(_energy_rate_range, n, args)
     return out
 
 
@@ -877,5 +864,5 @@ def energy_value(eq: BladeEquations, data: KernelData, psi: FloatArray, x: Float
     c = np.ascontiguousarray
     args = (c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
             c(ps, dtype=np.float64), _controls(eq), data.P, data.scalars, out)
-    _run(_energy_value_range, _energy_value_parallel, n, args)
+    _run(_energy_value_range, n, args)
     return out
