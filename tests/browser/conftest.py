@@ -30,17 +30,6 @@ def pytest_runtest_makereport(item, call):
         report.longrepr = f"ROTORLYAP_REQUIRE_BROWSER=1, but this browser test was skipped: {reason}"
 
 
-def pytest_collection_modifyitems(items):
-    """The checks of one page in one group (``xdist_group``): with ``--dist loadgroup`` (CI) the
-    pages are shared between the workers, each with its own browser, and every page is still
-    rendered once, by the worker that checks it."""
-    for item in items:
-        callspec = getattr(item, "callspec", None)
-        page = callspec.params.get("page") if callspec is not None else None
-        if page is not None:
-            item.add_marker(pytest.mark.xdist_group(page))
-
-
 @pytest.fixture(scope="session")
 def html_root() -> Path:
     if not (HTML / "index.html").is_file():
