@@ -564,7 +564,7 @@ class QuadraticFunction:
         :func:`rotorlyap.methods.lyapunov.band_max_dw` (``u = y / |y|``, ``a = scales``; see
         :func:`rotorlyap.analysis.fused.quadratic_rate_on_rays`), in one compiled call; None
         where that call does not apply (as :meth:`dW`'s fused call, and batches that
-        :meth:`dW` gives to the parallel kernels), and the search maps ``y`` itself."""
+        :meth:`dW` gives to the threaded kernels), and the search maps ``y`` itself."""
         y = np.asarray(y, dtype=float)
         if y.ndim != 2 or y.shape[1] != 6:
             return None
@@ -576,7 +576,7 @@ class QuadraticFunction:
 
     def _fused_for(self, psi: np.ndarray, m: int):
         """:meth:`_fused` for a batch of ``m`` states at azimuths ``psi`` (refused unless finite),
-        or None for batches that go to the parallel kernels (``m >= PARALLEL_MIN_STATES`` with
+        or None for batches that go to the threaded kernels (``m >= PARALLEL_MIN_STATES`` with
         two threads or more)."""
         if not (m < PARALLEL_MIN_STATES or threads() < 2):
             return None

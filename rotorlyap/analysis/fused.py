@@ -208,7 +208,7 @@ def quadratic_rate_about_tabulated(psi: np.ndarray, x: np.ndarray, scales: np.nd
     (``kernel``, its :class:`~rotorlyap.model.compiled.KernelData`, and ``controls``, the
     collective and cyclic pitch, rad), ``P`` the Hermite interpolant of the symmetric grids
     ``grids = (P_grid, dP_grid)`` over ``period`` (rad). One thread: the caller keeps the
-    parallel kernels for large batches. Returns ``W'`` per rad of azimuth, shape ``(m,)``."""
+    threaded kernels for large batches. Returns ``W'`` per rad of azimuth, shape ``(m,)``."""
     c = np.ascontiguousarray
     out = np.empty(x.shape[0])
     _quadratic_rate(c(psi, dtype=float), c(x, dtype=float), c(scales, dtype=float), motion.values,

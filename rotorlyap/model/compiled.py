@@ -67,7 +67,7 @@ from __future__ import annotations
 
 import math
 import os
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, wait
 
 import numpy as np
 from numpy.typing import NDArray
@@ -778,9 +778,10 @@ def _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant
 
 def _run(kernel, n: int, args: tuple) -> None:
     """Run a range kernel over ``n`` states: ``kernel(*args, 0, n)`` here below
-    PARALLEL_MIN_STATES states or with one thread, else in ``4 k`` chunks ``kernel(*args,
-    start, stop)`` on the ``k`` threads of :func:`_pool` (the kernels release the GIL; each
-    state is computed alone, so the numbers depend neither on the chunks nor on the threads).
+    PARALLEL_MIN_STATES states or with one thread, else in ``k`` chunks ``kernel(*args, start,
+    stop)``, ``k - 1`` of them on the threads of :func:`_pool` and the last here (the kernels
+    release the GIL; each state is computed alone, so the numbers depend neither on the chunks
+    nor on the threads).
 
     Threads of this module rather than numba's ``parallel`` option: numba links a ``prange``
     kernel again in every process that loads it from its cache (numba issue 8085), 1-2 s per
@@ -789,9 +790,15 @@ def _run(kernel, n: int, args: tuple) -> None:
     if n < PARALLEL_MIN_STATES or k < 2:
         kernel(*args, 0, n)
         return
-    m = 4 * k
-    pool = _pool(k)
-    futures = [pool.submit(kernel, *args, c * n // m, (c + 1) * n // m) for c in range(m)]
+    # one chunk a thread, the last one here: fewer hand-overs than smaller chunks (the states
+    # of a batch cost about the same)
+    pool = _pool(k - 1)
+    futures = [pool.submit(kernel, *args, c * n // k, (c + 1) * n // k) for c in range(k - 1)]
+    try:
+        kernel(*args, (k - 1) * n // k, n)
+    except BaseException:
+        wait(futures)  # the other chunks write into the caller's arrays: let them finish
+        raise
     for f in futures:
         f.result()
 
