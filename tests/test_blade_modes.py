@@ -161,3 +161,33 @@ def test_the_tables_and_figures_are_written_in_the_format_of_their_suffix(table_
         save_figure(fig, tmp_path / "f.jpg")
     with pytest.raises(ValueError, match="must end in .csv or .json"):
         write_table(rows, tmp_path / "t.txt")
+
+
+def test_a_blade_hinged_at_the_shaft_has_the_classical_spring_frequencies(table_i):
+    """blade_length = radius with every hub element 0: the classical centrally hinged blade
+    (Ormiston & Hodges' rigid blade). In vacuum, without gravity, pitch-flap coupling or C.G.
+    offset from the pitch axis, and with the pitch hinge held stiff, its rotating frequencies
+    are the textbook ones: flap ``nu^2 = 1 + K_beta / (I_beta Omega^2)`` (the centrifugal
+    stiffness of a central hinge is ``I_beta Omega^2``), lag ``nu^2 = K_zeta / (I_zeta
+    Omega^2)`` (none about the shaft), with ``I_beta = m R^3 / 3`` and ``I_zeta = I_beta + m R
+    k^2`` (the section's chordwise radius of gyration ``k`` lies in the plane of the disc)."""
+    import warnings
+
+    from rotorlyap.errors import TemplateValuesWarning
+
+    k_beta, k_zeta = 20000.0, 150000.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", TemplateValuesWarning)
+        p = replace(table_i, blade_length=table_i.radius, hub_elements=(0.0, 0.0, 0.0, 0.0, 0.0),
+                    flap_stiffness=k_beta, lag_stiffness=k_zeta, air_density=0.0, gravity=0.0,
+                    lag_damping=0.0, collective=0.0, pitch_flap_coupling=0.0,
+                    cg_position=table_i.pitch_axis, pitch_stiffness=1e7)
+    assert p.root_cutout == 0.0
+    m, R, om = p.mass_per_length, p.radius, p.rotor_speed
+    k = p.pitch_radius_of_gyration * p.chord
+    i_beta = m * R**3 / 3.0
+    i_zeta = i_beta + m * R * k**2
+    freq = {mode.dominant_hinge: abs(mode.eigenvalue.imag) for mode in hover_modes(p)}
+    assert freq["flap"] == pytest.approx(np.sqrt(1.0 + k_beta / (i_beta * om**2)), rel=1e-10)
+    assert freq["lag"] == pytest.approx(np.sqrt(k_zeta / (i_zeta * om**2)), rel=1e-10)
+

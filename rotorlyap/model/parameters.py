@@ -302,7 +302,8 @@ class BladeParameters:
         Rotor radius R, m.  Table I: 7.850 m.
     blade_length : float
         Blade length R1 (aerodynamic and massive span, root at ``R - R1``), m;
-        must be < ``radius``.  Table I: 6.772 m.
+        must be <= ``radius`` (equal: the root at the shaft, the classical centrally
+        hinged blade, whose radial hub elements e1, e3, e4 must then be 0).  Table I: 6.772 m.
     hub_elements : tuple of 5 float
         Hub element lengths e1..e5 divided by ``blade_length``, -.  Table I:
         (0.01, -0.005, 0.02, 0.03, 0.0); directions assumed (lost Fig. 3):
@@ -506,9 +507,10 @@ class BladeParameters:
         set_("n_blades", _int("n_blades", self.n_blades, 1))
         set_("n_stations", _int("n_stations", self.n_stations, 1))
 
-        if self.blade_length >= self.radius:
-            raise ValueError(f"blade_length must be < radius = {self.radius!r} m (the blade root lies "
-                             f"outboard of the shaft), got {self.blade_length!r}")
+        if self.blade_length > self.radius:
+            raise ValueError(f"blade_length must be <= radius = {self.radius!r} m (the blade root lies "
+                             f"at or outboard of the shaft; equal: a blade hinged at the shaft, with "
+                             f"every radial hub element 0), got {self.blade_length!r}")
         _check_unit_slips(self)
 
         he = self.hub_elements
