@@ -102,9 +102,17 @@ def _rate_of_forms(x, h, dxi, run, fscales, Pm, Dm, out):
 
 @jit(error_model="numpy")
 def _quadratic_rate(psi, x, scales, values, slopes, ctrl, P, sc, st, tab, P_grid, D_grid, period, out):
+    run, pu = _azimuth_runs(psi)
+    Pm, Dm = _forms_per_run(pu, P_grid, D_grid, period, x.shape[1])
+    _rate_at(psi, x, run, pu, values, slopes, ctrl, P, sc, st, tab, scales, Pm, Dm, out)
+
+
+@jit(error_model="numpy")
+def _rate_at(psi, x, run, pu, values, slopes, ctrl, P, sc, st, tab, scales, Pm, Dm, out):
+    """``W'`` at the disturbances ``x`` (m, n) about the tabulated motion, the azimuths' runs
+    ``run``/``pu`` (:func:`_azimuth_runs`) and the forms ``Pm``, ``Dm`` of each run given."""
     m = x.shape[0]
     n = x.shape[1]
-    run, pu = _azimuth_runs(psi)
     xi = np.empty((pu.shape[0], n))
     dxi = np.empty((pu.shape[0], n))
     _hermite_rows(pu, values, slopes, False, xi)
@@ -115,7 +123,6 @@ def _quadratic_rate(psi, x, scales, values, slopes, ctrl, P, sc, st, tab, P_grid
             z[i, c] = xi[run[i], c] + x[i, c]
     h = np.empty((m, n))
     _rhs_block_range(psi, z, ctrl, P, sc, st, tab, h, 0, m)
-    Pm, Dm = _forms_per_run(pu, P_grid, D_grid, period, n)
     _rate_of_forms(x, h, dxi, run, scales, Pm, Dm, out)
 
 
@@ -156,18 +163,7 @@ def _ray_rate(psi, y, level, bound, scales, fscales, values, slopes, ctrl, P, sc
         ri = rc + min(max(ti, 0.0), 1.0) * (bound - rc)
         for c in range(n):
             x[i, c] = ((y[i, c] / d) * ri) * scales[c]
-    # W' at x, as _quadratic_rate computes it
-    xi = np.empty((pu.shape[0], n))
-    dxi = np.empty((pu.shape[0], n))
-    _hermite_rows(pu, values, slopes, False, xi)
-    _hermite_rows(pu, values, slopes, True, dxi)
-    zs = np.empty((m, n))
-    for i in range(m):
-        for c in range(n):
-            zs[i, c] = xi[run[i], c] + x[i, c]
-    h = np.empty((m, n))
-    _rhs_block_range(psi, zs, ctrl, P, sc, st, tab, h, 0, m)
-    _rate_of_forms(x, h, dxi, run, fscales, Pm, Dm, out)
+    _rate_at(psi, x, run, pu, values, slopes, ctrl, P, sc, st, tab, fscales, Pm, Dm, out)
 
 
 def quadratic_rate_on_rays(psi: np.ndarray, y: np.ndarray, level: float, bound: float, scales: np.ndarray,
