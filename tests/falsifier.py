@@ -285,3 +285,31 @@ def start_set_excess(W, start, *, evaluations: int, seed: int = 5) -> float:
                      bounds=[(0.0, period), (0.0, 1.0)])
         best = max(best, -float(r.fun))
     return best
+
+
+def falsify_certificate(cert, *, evaluations: int | None = None, n_azimuths: int = 4) -> Attack:
+    """Attack a :class:`rotorlyap.Certificate` of the sound rule whole: the theorem's three facts
+    (:func:`attack`, ``evaluations`` each on ``W``, ten times as many on ``W'``; default: the
+    engine's own final check, so that the band sees ten times its evaluations), the start set's
+    reported reach (:func:`start_set_excess`) and the worst motions from 0.97 of the start set's
+    boundary for 20 revolutions (:func:`worst_start_peak`; one start azimuth where nothing
+    depends on it). Asserts each; returns what the searches found."""
+    res, fun = cert.result, cert.lyapunov
+    assert cert.certified and res.rule == "sound" and res.stable.all(), cert.message
+    quadratic = cert.function == "quadratic"
+    budget = res.check_evaluations if evaluations is None else evaluations
+    assert budget > 0
+    hit = attack(fun.W, fun.dW, res, evaluations=budget, quadratic=quadratic)
+    assert hit.min_w_sphere >= res.alpha * (1 - 1e-9), f"W = {hit.min_w_sphere:.6g} < alpha on the sphere A"
+    assert hit.sup_w_balls <= 1e-9 * abs(res.alpha), "a start on the boundary of lambda0 has W above the level"
+    assert hit.max_dw_band < 0, f"W' = {hit.max_dw_band:.3g} >= 0 found on the band"
+    start = cert.start_set
+    assert start is not None and np.all(start.axis_reach >= cert.start_region * (1 - 1e-12))
+    excess = start_set_excess(fun.W, start, evaluations=min(budget, 20_000))
+    # the reach is the supremum of the open set (a quadratic's is the closed-form crossing, where
+    # W = alpha to round-off): W above the level by more than round-off inside it is a hit
+    assert excess <= 1e-9 * abs(start.level), f"W - alpha = {excess:.3g} > 0 inside the start set's reported reach"
+    peak = worst_start_peak(fun.f, res, n_periods=20.0, n_azimuths=1 if start.psi.size == 1 else n_azimuths,
+                            W=fun.W, quadratic=quadratic)
+    assert np.isfinite(peak) and peak < 1.0, f"a motion from a worst-case start reached {peak:.3f} A"
+    return hit

@@ -344,8 +344,8 @@ def _sig(v: float, digits: int = 2) -> float:
 
 
 def _pct(fraction: float) -> str:
-    """A fraction as a percentage of two significant digits; below 0.01 % as "< 0.01"."""
-    return "< 0.01" if 100 * fraction < 0.01 else f"{_sig(100 * fraction):g}"
+    """A fraction as a percentage, two significant digits (never rounded to "0.0")."""
+    return f"{_sig(100 * fraction):g}"
 
 
 @dataclass(frozen=True)
