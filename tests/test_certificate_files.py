@@ -215,6 +215,38 @@ def test_certify_save_writes_a_file_that_verifies(tmp_path, capsys):
     assert rotorlyap.verify(out).holds
 
 
+def test_a_c81_airfoil_is_embedded_and_a_table_a_file_would_round_is_refused(quadratic, tmp_path):
+    """A blade whose section is a C81 file: its table travels inside the certificate and the blade
+    read back is the same blade; a table off the printed grid of a C81 file (which its parameter
+    file would round) is refused when saving, saying why."""
+    import dataclasses
+
+    from rotorlyap.model.c81 import C81Section, read_c81, table_from_section, write_c81
+    from rotorlyap.model.parameters import TABLE_I_AIRFOIL
+
+    table = tmp_path / "section.c81"
+    write_c81(table_from_section(TABLE_I_AIRFOIL, name="Table I section"), table)
+    blade = dataclasses.replace(rotorlyap.BladeParameters.table_i("forward"), airfoil=C81Section(read_c81(table)))
+    cert = rotorlyap.certify(blade, 0.0, condition="none", function="quadratic", n_psi=4)
+    path = cert.save(tmp_path / "c81.json")
+    data = json.loads(path.read_text())
+    assert list(data["blade"]["files"]) == ["blade.c81"] and 'airfoil = "blade.c81"' in data["blade"]["parameters_toml"]
+    assert read_certificate(path).params == cert.trim.params
+    assert rotorlyap.verify(path).holds
+
+    exact = C81Section(table_from_section(TABLE_I_AIRFOIL))  # 6-digit coefficients: a C81 file prints 4
+    params = dataclasses.replace(quadratic[0].trim.params, airfoil=exact)
+    unsaveable = dataclasses.replace(quadratic[0], trim=dataclasses.replace(quadratic[0].trim, params=params))
+    with pytest.raises(ValueError, match="cannot be stored in a certificate file"):
+        unsaveable.save(tmp_path / "rounded.json")
+
+
+def test_prove_adds_the_ball_arithmetic_proof_of_a_quadratic_function(quadratic):
+    result = rotorlyap.verify(quadratic[1], prove=True)
+    assert result.holds and result.checks[-1].name == "proof"
+    assert 0 < result["proof"].value <= quadratic[0].bound
+
+
 # ------------------------------------------------------------------------------- slow
 
 
@@ -238,6 +270,27 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
         _scale("lambda0", 0.5)(d)
 
     assert _failing(rotorlyap.verify(_edited(path, tmp_path, edit))) == {"band"}
+
+
+@pytest.mark.slow
+def test_a_forward_flight_certificate_round_trips_and_a_perturbed_table_entry_is_refused(tmp_path):
+    """The trimmed helicopter at mu = 0.1, quadratic function: the Hermite table of the periodic
+    motion (4096 azimuths) and P on its grid stored and read back bit for bit, verified; one
+    tabulated flap angle moved by 1e-3 rad no longer solves the equations."""
+    cert = rotorlyap.certify(rotorlyap.BladeParameters.table_i("forward"), 0.1, function="quadratic")
+    assert cert.certified
+    path = cert.save(tmp_path / "mu01.json")
+    stored = read_certificate(path)
+    table = cert.lyapunov.steady.xi_function.__self__
+    assert np.array_equal(stored.steady.xi_function.__self__.values, table.values)
+    assert np.array_equal(stored.function.solution.P_grid, cert.lyapunov.solution.P_grid)
+    result = rotorlyap.verify(path)
+    assert result.holds and result["band"].value == cert.result.band_max_dW
+
+    def edit(d):
+        d["steady_motion"]["values"][100][0] += 1e-3
+
+    assert "steady motion" in _failing(rotorlyap.verify(_edited(path, tmp_path, edit)))
 
 
 @pytest.mark.slow

@@ -63,6 +63,7 @@ from __future__ import annotations
 import inspect
 import json
 import math
+import re
 import tempfile
 import warnings
 from dataclasses import dataclass, fields
@@ -230,7 +231,7 @@ def save_certificate(cert, path: str | Path) -> Path:
     Returns
     -------
     pathlib.Path
-        ``path``.
+        The file written.
 
     Raises
     ------
@@ -270,8 +271,29 @@ def save_certificate(cert, path: str | Path) -> Path:
         "summary": cert.summary(),
     }
     path = Path(path)
-    path.write_text(json.dumps(data, indent=1, allow_nan=False) + "\n", encoding="utf-8")
+    path.write_text(_dumps(data), encoding="utf-8")
     return path
+
+
+def _dumps(data: dict) -> str:
+    """``data`` as JSON text: objects indented, each array of numbers on one line (not one line
+    per number: a table of 4096 states would be some 30,000 lines); floats by ``repr``."""
+    arrays = []
+
+    def numeric(obj) -> bool:
+        return isinstance(obj, list) and bool(obj) and all(
+            numeric(v) if isinstance(v, list) else isinstance(v, (int, float)) and not isinstance(v, bool) for v in obj)
+
+    def mark(obj):
+        if isinstance(obj, dict):
+            return {k: mark(v) for k, v in obj.items()}
+        if numeric(obj):
+            arrays.append(json.dumps(obj, separators=(",", ":"), allow_nan=False))
+            return f"\x00{len(arrays) - 1}\x00"
+        return obj
+
+    text = json.dumps(mark(data), indent=1, allow_nan=False)
+    return re.sub(r'"\\u0000(\d+)\\u0000"', lambda m: arrays[int(m.group(1))], text) + "\n"
 
 
 # ------------------------------------------------------------------------------------ reading
