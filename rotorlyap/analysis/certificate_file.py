@@ -679,19 +679,27 @@ class Verification:
 
     def summary(self) -> str:
         """The verdict and one line per check, rounded to the digits the checks determine (values
-        to 3 significant digits, margins to 2; a round-off-level margin as a bound)."""
+        to 3 significant digits, margins to 2; round-off-level numbers as bounds,
+        :func:`rotorlyap.reporting.format_small`); a failing check adds its numbers."""
         head = (f"{'VERIFIED' if self.holds else 'REFUSED'}: mu = {self.mu:g}, {self.condition}, {self.function} "
                 f"function, bound A = {self.bound:.3g}, start region {self.start_region:.3g} (scaled norm)")
         lines = [head]
+        width = max(len(c.name) for c in self.checks)
         for c in self.checks:
             margin = format_small(c.margin, 1e-6) if 0 <= c.margin < 1e-6 else f"{c.margin:.2g}"
-            lines.append(f"  {'holds' if c.holds else 'FAILS'}  {c.name}: {c.meaning} (margin {margin})")
+            lines.append(f"  {'holds' if c.holds else 'FAILS'}  {c.name:<{width}}  {c.quantity}: {_rounded(c.value)} / "
+                         f"{_rounded(c.limit)} (margin {margin})")
             if not c.holds:
                 lines.append(f"         {c.detail}")
         return "\n".join(lines)
 
     def __str__(self) -> str:
         return self.summary()
+
+
+def _rounded(value: float) -> str:
+    """3 significant digits; a round-off-level magnitude as a bound."""
+    return format_small(value, 1e-10) if 0 <= value < 1e-10 else f"{value:.3g}"
 
 
 def _steady_check(stored: StoredCertificate) -> Check:
@@ -717,7 +725,8 @@ def _steady_check(stored: StoredCertificate) -> Check:
                  f"largest residual |xi' - h(psi, xi)| at the {psi.size} tabulated azimuths is "
                  f"{format_small(float(residual[j]), 1e-10)} per rad (scaled norm) at psi = {np.degrees(psi[j]):.4g} deg, "
                  f"relative {format_small(rel, 1e-10)} (to the largest rate {rates:.3g} or 1); it must be below "
-                 f"{STEADY_RESIDUAL_TOL:g}" + ("" if holds else ": the table does NOT solve the equations"))
+                 f"{STEADY_RESIDUAL_TOL:g}" + ("" if holds else ": the table does NOT solve the equations"),
+                 "relative residual / the tolerance")
 
 
 def _proof_check(stored: StoredCertificate) -> Check:
@@ -728,7 +737,7 @@ def _proof_check(stored: StoredCertificate) -> Check:
     return Check("proof", holds, float(proof.A), stored.A, float(proof.A / stored.A) if holds else -np.inf,
                  "proved by ball arithmetic for the model in exact arithmetic (rotorlyap.analysis.proof.prove_blade)",
                  f"proved bound {proof.A:.3g}, start radius {proof.min_lambda0:.3g} (scaled norm), the numerical "
-                 f"bound {stored.A:.3g}: {proof.message}")
+                 f"bound {stored.A:.3g}: {proof.message}", "proved bound / the numerical bound")
 
 
 def verify(path: str | Path, *, prove: bool = False) -> Verification:

@@ -68,6 +68,9 @@ class Check:
         What the claim means, in a sentence.
     detail : str
         The numbers: what was found against what, and where it fails, why.
+    quantity : str
+        What ``value`` and ``limit`` are, in a few words each (``"inf W on the sphere / the
+        level"``).
     """
 
     name: str
@@ -77,6 +80,7 @@ class Check:
     margin: float
     meaning: str
     detail: str
+    quantity: str = "value / limit"
 
     def __str__(self) -> str:
         return f"{'holds' if self.holds else 'FAILS'}  {self.name}: {self.detail}"
@@ -172,7 +176,8 @@ def _level_check(levels, w_matrix, level: float, A: float, period: float) -> Che
     return Check("level", holds, float(found), level, float(1.0 - level / found) if found > 0 else -np.inf,
                  "the level set {W < c} lies inside the bound: c <= inf W on the sphere ||x|| = A over the period",
                  f"inf W on ||x|| = {A:.6g} is {found:.6g} ({how}); the level c = {level:.6g} "
-                 + ("is not above it" if holds else "is ABOVE it: the level set reaches beyond the bound"))
+                 + ("is not above it" if holds else "is ABOVE it: the level set reaches beyond the bound"),
+                 "inf W on the sphere A / the level")
 
 
 def _start_check(sys, levels, w_matrix, level: float, lam: np.ndarray, psi: np.ndarray, a: np.ndarray, dirs,
@@ -194,7 +199,8 @@ def _start_check(sys, levels, w_matrix, level: float, lam: np.ndarray, psi: np.n
                  "||x|| < lambda0_j at each azimuth psi_j",
                  f"largest sup W on a start ball is {sup[j]:.6g} at psi = {np.degrees(psi[j]):.4g} deg "
                  f"(lambda0 = {lam[j]:.6g}; {how}); the level c = {level:.6g}"
-                 + ("" if holds else f": {int(np.sum(sup >= level))} of {lam.size} start balls LEAVE the level set"))
+                 + ("" if holds else f": {int(np.sum(sup >= level))} of {lam.size} start balls LEAVE the level set"),
+                 "largest sup W on a start ball / the level")
 
 
 def _band_check(sys, levels, w_matrix, level: float, A: float, psi: np.ndarray, period: float, a: np.ndarray,
@@ -221,4 +227,5 @@ def _band_check(sys, levels, w_matrix, level: float, A: float, psi: np.ndarray, 
     return Check("band", bool(holds), float(worst), float(need),
                  float((need - worst) / abs(need)) if need != 0 and np.isfinite(worst) else -np.inf,
                  "W' < 0 on the band between the level set and the bound at every azimuth of the period "
-                 "(condition (h) of the theorem, the sound rule's final check)", detail)
+                 "(condition (h) of the theorem, the sound rule's final check)", detail,
+                 "largest W' on the band, per rad / -margin max|W|")
