@@ -241,6 +241,35 @@ def test_a_c81_airfoil_is_embedded_and_a_table_a_file_would_round_is_refused(qua
         unsaveable.save(tmp_path / "rounded.json")
 
 
+def test_a_polynomial_function_with_harmonics_is_rebuilt_from_its_description_and_coefficients(quadratic, tmp_path):
+    """The polynomial family (degrees 2 to 4, one harmonic of the azimuth on the quadratic terms):
+    its basis rebuilt from family, harmonics and degrees has the stored names, and with the stored
+    coefficients it is the same W and W' to the bit (the file's claims are the quadratic
+    certificate's, so only the reading is checked here); a description that does not match the
+    names is a CertificateFileError."""
+    import dataclasses
+
+    from rotorlyap.analysis.nonlinear_functions import DesignedFunction, polynomial_basis
+    from rotorlyap.methods.scenario import BasisFunction, Design
+
+    cert = quadratic[0]
+    fun = cert.lyapunov
+    basis = polynomial_basis(fun.blade, fun.steady, scales=cert.scales, harmonics=1)
+    c = np.random.default_rng(2).normal(size=basis.size)
+    bf = BasisFunction(basis, c, fun.f, "polynomial")
+    designed = DesignedFunction(fun.blade, fun.steady, "polynomial", Design(bf, 0.1, 0.3, 0.01, True, 1, 10),
+                                cert.scales, True, "polynomial")
+    path = dataclasses.replace(cert, lyapunov=designed, function="polynomial").save(tmp_path / "poly.json")
+    data = json.loads(path.read_text())["function"]
+    assert (data["harmonics"], data["degrees"], len(data["names"])) == (1, [2, 3, 4], basis.size)
+    back = read_certificate(path).function
+    x = np.random.default_rng(3).normal(size=(32, 6)) * cert.scales * 0.5
+    psi = np.linspace(0.0, 6.0, 32)
+    assert np.array_equal(back.W(psi, x), bf.W(psi, x)) and np.array_equal(back.dW(psi, x), bf.dW(psi, x))
+    with pytest.raises(CertificateFileError, match="function.names"):
+        read_certificate(_edited(path, tmp_path, lambda d: d["function"].__setitem__("harmonics", 0)))
+
+
 def test_prove_adds_the_ball_arithmetic_proof_of_a_quadratic_function(quadratic):
     result = rotorlyap.verify(quadratic[1], prove=True)
     assert result.holds and result.checks[-1].name == "proof"
@@ -261,6 +290,9 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
     stored = read_certificate(path)
     assert np.array_equal(stored.function.function.coefficients, cert.lyapunov.function.coefficients)
     assert stored.function.function.basis.names == cert.lyapunov.function.basis.names
+    x = np.random.default_rng(1).normal(size=(64, 6)) * cert.scales * 3.0
+    psi = np.zeros(64)
+    assert np.array_equal(stored.function.W(psi, x), cert.lyapunov.W(psi, x))
     result = rotorlyap.verify(path)
     assert result.holds and result["band"].value == cert.result.band_max_dW
     k = stored.data["function"]["names"].index("theta'^2")

@@ -482,7 +482,7 @@ def _read_steady(r: _Fields, data: dict) -> SteadyMotion:
         raise r.fail("steady_motion.values", f"a table of at least 8 azimuths, got {values.shape[0]}")
     table = TabulatedMotion(values=values, slopes=slopes,
                             max_error=r.number(st, "max_error", "steady_motion"), label=label)
-    return SteadyMotion(label=label, xi_function=table.xi, dxi_function=table.dxi)
+    return table.steady  # as rotorlyap.certify took it (a table that does not move is constant)
 
 
 def _read_quadratic(r: _Fields, fun: dict, blade: Blade, steady: SteadyMotion, a: np.ndarray) -> QuadraticFunction:
@@ -493,6 +493,8 @@ def _read_quadratic(r: _Fields, fun: dict, blade: Blade, steady: SteadyMotion, a
     k = psi.size
     if interpolation == "constant" and k != 1:
         raise r.fail(f"{w}.psi", f"a constant P has one grid point, got {k}")
+    if r.integer(sol, "n_grid", w, 1) != k:
+        raise r.fail(f"{w}.n_grid", f"must equal the number of grid points in psi, {k}")
     fl = r.get(sol, "floquet", w)
     mult = r.array(fl, "multipliers", f"{w}.floquet", (6, 2))
     mu = mult[:, 0] + 1j * mult[:, 1]
