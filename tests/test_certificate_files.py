@@ -175,6 +175,9 @@ def _bad_files(path: Path, tmp_path: Path) -> dict[str, tuple[Path, str]]:
     data = json.loads(text)
     data["search"]["n_sphere"] = 16
     write("weaker search", json.dumps(data), "weaker check")
+    data = json.loads(text)
+    data["claims"]["period"] = np.pi
+    write("half the period", json.dumps(data), "the blade's period 2 pi")
     return files
 
 

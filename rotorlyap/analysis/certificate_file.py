@@ -71,6 +71,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..conventions import TWO_PI
 from ..errors import CertificateFileError, TemplateValuesWarning
 from ..methods.certificate_check import Check, check_claims
 from ..methods.floquet import FloquetResult
@@ -498,7 +499,7 @@ def _read_quadratic(r: _Fields, fun: dict, blade: Blade, steady: SteadyMotion, a
     fl = r.get(sol, "floquet", w)
     mult = r.array(fl, "multipliers", f"{w}.floquet", (6, 2))
     mu = mult[:, 0] + 1j * mult[:, 1]
-    period = r.number(sol, "period", w, positive=True)
+    period = _blade_period(r, sol, w)
     tol = r.number(fl, "tol", f"{w}.floquet")
     rho = float(np.max(np.abs(mu)))
     with np.errstate(divide="ignore"):
@@ -517,6 +518,14 @@ def _read_quadratic(r: _Fields, fun: dict, blade: Blade, steady: SteadyMotion, a
                                                   "periodicity_error", "min_eigenvalue", "max_eigenvalue")})
     return QuadraticFunction(blade=blade, steady=steady, Q=r.array(fun, "Q", "function", (6, 6)), scales=a,
                              solution=solution, label=r.text(fun, "label", "function"))
+
+
+def _blade_period(r: _Fields, obj: dict, where: str) -> float:
+    """The stored period, which must be the blade's, 2 pi rad (a shorter one would search part of it)."""
+    period = r.number(obj, "period", where)
+    if period != TWO_PI:
+        raise r.fail(f"{where}.period", f"must be the blade's period 2 pi = {TWO_PI!r} rad, got {period!r}")
+    return period
 
 
 def _or_nan(value: float | None) -> float:
@@ -628,7 +637,7 @@ def read_certificate(path: str | Path) -> StoredCertificate:
     return StoredCertificate(
         path=path, params=params, mu=mu, condition=condition, blade=blade, steady=steady, function=function,
         scales=a, A=A, level=r.number(claims, "level", "claims", positive=True), lambda0=lam,
-        period=r.number(claims, "period", "claims", positive=True),
+        period=_blade_period(r, claims, "claims"),
         band_max_dW=r.number(claims, "band_max_dW", "claims"), tol=r.number(claims, "tol", "claims"),
         search=search, data=data)
 
