@@ -306,6 +306,11 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
 
     assert _failing(rotorlyap.verify(_edited(path, tmp_path, edit))) == {"band"}
 
+    def one_ball(d):  # W does not depend on the azimuth in hover: the search is at one, the claim at all
+        d["claims"]["lambda0"][5] *= 1.5
+
+    assert "start" in _failing(rotorlyap.verify(_edited(path, tmp_path, one_ball)))
+
 
 @pytest.mark.slow
 def test_a_forward_flight_certificate_round_trips_and_a_perturbed_table_entry_is_refused(tmp_path):

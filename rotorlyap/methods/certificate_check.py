@@ -185,12 +185,13 @@ def _start_check(sys, levels, w_matrix, level: float, lam: np.ndarray, psi: np.n
     if w_matrix is not None:  # sup W on the ball = lambda0^2 l_max(S(psi_j))
         sup = lam * lam * _raw_eigenvalues(w_matrix, psi)[..., -1]
         how = "closed form, lambda0^2 l_max(S)"
-    else:  # the engine's search of W over each ball (a shell from the centre out)
-        p = psi[:1] if autonomous else psi
-        r = lam[:1] if autonomous else lam
-        sup = sphere_extremum(sys.w, p, None, a, dirs, per_psi=True, shell=(T_MIN * r, r), n_levels=max(n_shells, 8),
-                              **levels.w_common).value
-        sup = np.broadcast_to(sup, lam.shape) if autonomous else sup
+    elif autonomous:  # W is the same at every azimuth: the largest ball holds every other
+        j = int(np.argmax(lam))
+        sup = np.full(lam.shape, -np.inf)
+        sup[j] = _ball_sup(sys, psi[:1], lam[j:j + 1], a, dirs, n_shells, levels.w_common)[0]
+        how = "the engine's search of W over the largest ball (W does not depend on the azimuth)"
+    else:
+        sup = _ball_sup(sys, psi, lam, a, dirs, n_shells, levels.w_common)
         how = "the engine's search of W over each ball"
     j = int(np.argmax(sup / level))
     holds = bool(np.all(sup < level))
@@ -201,6 +202,13 @@ def _start_check(sys, levels, w_matrix, level: float, lam: np.ndarray, psi: np.n
                  f"(lambda0 = {lam[j]:.6g}; {how}); the level c = {level:.6g}"
                  + ("" if holds else f": {int(np.sum(sup >= level))} of {lam.size} start balls LEAVE the level set"),
                  "largest sup W on a start ball / the level")
+
+
+def _ball_sup(sys, psi: np.ndarray, radii: np.ndarray, a: np.ndarray, dirs, n_shells: int, common: dict) -> np.ndarray:
+    """The largest ``W`` found on the ball of radius ``radii[j]`` at each azimuth ``psi[j]``: the
+    engine's search over the shell from the centre out, the azimuth fixed."""
+    return sphere_extremum(sys.w, psi, None, a, dirs, per_psi=True, shell=(T_MIN * radii, radii),
+                           n_levels=max(n_shells, 8), **common).value
 
 
 def _band_check(sys, levels, w_matrix, level: float, A: float, psi: np.ndarray, period: float, a: np.ndarray,
