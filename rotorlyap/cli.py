@@ -63,6 +63,8 @@ from decimal import Decimal, InvalidOperation
 from pathlib import Path
 from typing import Any, Callable, TextIO
 
+from .progress import listening
+
 # numpy is imported where it is used, after main() has chosen the BLAS threads (_one_blas_thread)
 
 __all__ = ["build_parser", "main"]
@@ -486,12 +488,13 @@ def _blade(params_file: Path | None, cg: str | None):
     return params, {"params": str(params_file), "cg": cg, "cg_position": shown}
 
 
-def _per_hinge(radius: float, scales, omega: float) -> dict:
-    """``{flap|lag|pitch: {"deg", "deg_per_s"}}``: a radius of the scaled norm along each hinge
-    angle (scale a_i, rad) and rate (a_(i+3), rad/rad of azimuth, times Omega rad/s)."""
+def _per_hinge(radius, scales, omega: float) -> dict:
+    """``{flap|lag|pitch: {"deg", "deg_per_s"}}``: a radius of the scaled norm (or one per state
+    component, (6,)) along each hinge angle (scale a_i, rad) and rate (a_(i+3), rad/rad of azimuth,
+    times Omega rad/s)."""
     import numpy as np
 
-    a = np.degrees(np.asarray(scales, dtype=float)) * float(radius)
+    a = np.degrees(np.asarray(scales, dtype=float)) * np.asarray(radius, dtype=float)
     return {h: {"deg": _sig(a[i]), "deg_per_s": _sig(a[i + 3] * omega)} for i, h in enumerate(HINGE_SYMBOLS)}
 
 
@@ -630,6 +633,9 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
     dict
         ``certified``; ``bound`` and ``start_region`` (scaled norm); ``start_region_per_hinge``
         and ``bound_per_hinge`` (``{flap|lag|pitch: {"deg", "deg_per_s"}}``);
+        ``start_set_per_hinge`` where certified (how far the certified start set
+        ``{||x|| < A, W < alpha}`` reaches along each hinge angle and rate alone, at the worst
+        start azimuth);
         ``growth_rate_per_rev``; ``trim`` (controls and shaft tilt in deg, ``CT_over_sigma``);
         ``message`` (which says "numerical certificate" where one was given); with ``verify=True``
         ``proof``: ``proved``, ``bound``, ``level``, ``start_region`` (scaled norm) and per hinge,
@@ -651,6 +657,8 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
         "bound": _sig(cert.bound),
         "start_region": _sig(cert.start_region),
         "start_region_per_hinge": _per_hinge(cert.start_region, cert.scales, omega),
+        **({} if cert.start_set is None else {
+            "start_set_per_hinge": _per_hinge(cert.start_set.axis_reach, cert.scales, omega)}),
         "bound_per_hinge": _per_hinge(cert.bound, cert.scales, omega),
         "growth_rate_per_rev": _sig(cert.growth_rate),
         "trim": {"collective_deg": _sig(collective), "cyclic_cos_deg": _sig(cyc_c), "cyclic_sin_deg": _sig(cyc_s),
@@ -686,8 +694,9 @@ def _certify(args) -> int:
     scales = None if args.scales is None else np.radians(args.scales)
     print(f"certifying: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.condition} ...",
           file=sys.stderr, flush=True)
-    cert = certify(params, args.mu, condition=args.condition, function=function, A=args.A, scales=scales,
-                   n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify)
+    with listening(_progress_listener()):
+        cert = certify(params, args.mu, condition=args.condition, function=function, A=args.A, scales=scales,
+                       n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify)
     data = certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere)
     if args.plot is not None:
         from .figures.blade_commands import plot_certificate
@@ -710,6 +719,14 @@ def _verify(args) -> int:
         return 2
     print(result.summary())
     return 0 if result.holds else 1
+
+
+def _progress_listener():
+    """What the long commands tell on standard error while they work (:mod:`rotorlyap.progress`): a
+    progress bar on a terminal, one line per stage otherwise (a log); never on standard output."""
+    from .progress import Bar, Lines
+
+    return Bar(sys.stderr) if sys.stderr.isatty() else Lines(sys.stderr, prefix="  ")
 
 
 # ---------------------------------------------------------------------- sweep

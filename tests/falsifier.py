@@ -216,21 +216,30 @@ def attack(W, dW, result, *, evaluations: int, quadratic: bool = False) -> Attac
 
 
 def worst_start_peak(f, result, *, n_periods: float = 20.0, n_dir: int = 32, rounds: int = 3,
-                     n_azimuths: int = 4) -> float:
+                     n_azimuths: int = 4, W=None, quadratic: bool = False) -> float:
     """Largest peak norm / ``A`` of motions started at ``0.99 lambda0_j``, the start direction
     chosen by optimisation: the best of ``n_dir`` directions at each of ``n_azimuths`` certified
     azimuths (evenly spread; one if nothing depends on the azimuth), then improved by ``rounds``
-    of 16 perturbations (all motions of a round integrated together)."""
+    of 16 perturbations (all motions of a round integrated together).
+
+    With ``W`` (the certificate's function) the starts lie in the whole start set
+    ``{||x|| < A, W < alpha}`` instead (:mod:`rotorlyap.methods.start_set`): at 0.97 of the first
+    radius where ``W`` reaches ``alpha`` along each direction, so that the claim about the set, not
+    only about its inner ball, meets the worst motions."""
     n, a = result.scales.size, result.scales
     rng = np.random.default_rng(7)
     worst = 0.0
     certified = np.flatnonzero(result.stable)
     for j in certified[::max(1, certified.size // n_azimuths)][:n_azimuths]:
-        r0 = 0.99 * result.lambda0[j]
+        def radius(u, j=j):
+            if W is None:
+                return np.full(u.shape[0], 0.99 * result.lambda0[j])
+            psi = np.full(u.shape[0], result.psi[j])
+            return 0.97 * band_level(W, psi, u, a, result.level, result.A, quadratic=quadratic)
 
         def peaks(u):
-            sim = simulate(f, r0 * u * a, result.psi[j], n_periods, period=result.period, scales=a,
-                           escape=10.0 * result.A)
+            sim = simulate(f, radius(u)[:, None] * u * a, result.psi[j], n_periods, period=result.period,
+                           scales=a, escape=10.0 * result.A)
             return np.where(sim.escaped, np.inf, sim.max_norm)
 
         u = rng.normal(size=(n_dir, n))
@@ -248,3 +257,31 @@ def worst_start_peak(f, result, *, n_periods: float = 20.0, n_dir: int = 32, rou
                 step *= 0.5
         worst = max(worst, best_p / result.A)
     return worst
+
+
+def start_set_excess(W, start, *, evaluations: int, seed: int = 5) -> float:
+    """Largest ``W - level`` the adversary finds on the segments a start set is said to reach:
+    along each of its directions, from 0 to the reported reach at the worst azimuth, at
+    pseudo-random azimuths and radii (``evaluations`` points), then the best 64 refined by
+    L-BFGS-B over (azimuth, fraction of the reach). Must be < 0: the reported reach lies in the
+    set ``{W < level}`` at every start azimuth."""
+    rng = np.random.default_rng(seed)
+    u = start.directions
+    k = u.shape[0]
+    reach = start.least
+    period = 2 * np.pi if start.psi.size > 1 else 0.0
+    d = rng.integers(0, k, evaluations)
+    psi = rng.uniform(0.0, 2 * np.pi, evaluations) if period else np.zeros(evaluations)
+    t = rng.uniform(0.0, 1.0, evaluations)
+    vals = W(psi, (t * reach[d])[:, None] * u[d] * start.scales) - start.level
+    best = float(vals.max())
+    for i in np.argsort(-vals)[:64]:
+        di = d[i]
+
+        def g(z, di=di):
+            return -float(W(np.array([z[0]]), (z[1] * reach[di]) * u[di][None, :] * start.scales)[0] - start.level)
+
+        r = minimize(g, np.array([psi[i], t[i]]), method="L-BFGS-B",
+                     bounds=[(0.0, period), (0.0, 1.0)])
+        best = max(best, -float(r.fun))
+    return best

@@ -23,7 +23,7 @@ import numpy as np
 from rotorlyap import certify
 from rotorlyap.model.parameters import BladeParameters
 
-from falsifier import attack, worst_start_peak
+from falsifier import attack, start_set_excess, worst_start_peak
 
 #: Evaluations of each search on ``W`` (ten times as many on the band for ``W'``).
 EVALUATIONS = 20_000
@@ -56,5 +56,10 @@ def _attack(cert, *, n_azimuths: int) -> None:
     assert hit.min_w_sphere >= res.alpha * (1 - 1e-9), f"W = {hit.min_w_sphere:.6g} < alpha on the sphere A"
     assert hit.sup_w_balls <= 1e-9 * abs(res.alpha), "a start on the boundary of lambda0 has W above the level"
     assert hit.max_dw_band < 0, f"W' = {hit.max_dw_band:.3g} >= 0 found on the band"
-    peak = worst_start_peak(fun.f, res, n_periods=20.0, n_azimuths=n_azimuths)
+    # the start set's reach along each hinge: W below the level on every segment it reports
+    assert cert.start_set is not None and np.all(cert.start_set.axis_reach >= cert.start_region)
+    excess = start_set_excess(fun.W, cert.start_set, evaluations=EVALUATIONS)
+    assert excess < 0, f"W - alpha = {excess:.3g} >= 0 inside the start set's reported reach"
+    # the worst motions from the whole start set (0.97 of its boundary), not only from the ball
+    peak = worst_start_peak(fun.f, res, n_periods=20.0, n_azimuths=n_azimuths, W=fun.W)
     assert np.isfinite(peak) and peak < 1.0, f"a motion from a worst-case start reached {peak:.3f} A"

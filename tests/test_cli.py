@@ -140,8 +140,13 @@ def test_certify_prints_the_certificate_per_hinge(capsys):
     significant digits, and the message's 'numerical certificate'; the function it rests on and
     every candidate tried."""
     assert main(["certify", "--mu", "0", "--n-psi", "4", "--n-sphere", "16", "--function", "quadratic"]) == 0
-    data = json.loads(capsys.readouterr().out)
+    printed = capsys.readouterr()
+    data = json.loads(printed.out)  # the progress went to stderr, one line per stage (not a terminal)
+    assert "  sound rule: final check of the band" in printed.err and "start set" not in printed.out
     assert data["certified"] is True and "numerical certificate" in data["message"]
+    # the start set holds the ball along every hinge
+    for h, v in data["start_set_per_hinge"].items():
+        assert v["deg"] >= data["start_region_per_hinge"][h]["deg"]
     assert data["function"] == "quadratic" and "quadratic function" in data["kind"]
     assert [c["function"] for c in data["candidates"]] == ["quadratic"]
     assert data["candidates"][0]["start_region"] == data["start_region"]

@@ -55,13 +55,24 @@ def test_a_case_holds_the_certificate_certify_gives_and_its_yardstick(data):
     # the certificate starts inside the region of stable motion, along every component
     assert np.all(r.reach("quadratic") < 1.0)
     assert np.all(np.isnan(r.reach("energy")))
+    # the start set holds the ball and is certify's, per hinge in the same units; it too lies
+    # inside the region of stable motion (a start set beyond the simulated region would be false)
+    assert np.all(r.set_reach("quadratic") >= r.reach("quadratic")) and np.all(r.set_reach("quadratic") < 1.0)
+    whole = r.per_component(np.asarray(cand.start_set))
+    assert whole[2] == pytest.approx(direct.start_set_per_hinge["pitch"][0], rel=1e-9)
+    # the slices' start set holds its inner ball's points and nothing beyond the bound
+    axis, inside = r.set_slices["flap-lag"]
+    yi, yj = np.meshgrid(axis, axis, indexing="ij")
+    rho = np.hypot(yi, yj)
+    assert np.all(inside[rho < 0.999 * cand.start_region]) and not np.any(inside[rho >= cand.bound])
 
 
 @pytest.mark.slow
 def test_the_table_csv_and_figures_are_made_from_the_data(data, tmp_path):
     table = data.markdown()
-    assert table.count("\n") == 1 + 2  # header, rule, then the yardstick and one function
-    assert "quadratic function: certified start" in table and "augmented energy" not in table
+    assert table.count("\n") == 1 + 3  # header, rule, then the yardstick and one function's set and ball
+    assert "quadratic function: start set" in table and "quadratic function: start ball" in table
+    assert "augmented energy" not in table
     facts = data.facts()
     assert facts["ch11_forward_chosen"] == "quadratic function"
     assert "ch11_gain_lo" not in facts  # no designed function: no gain to quote

@@ -1,6 +1,6 @@
 """The package's layers hold: data flows one way, and no module imports itself in a circle.
 
-    conventions, errors, jit, reporting  (shared, depend on nothing of the package)
+    conventions, errors, jit, progress, reporting  (shared, depend on nothing of the package)
     methods   (the general method)  may use: shared
     model     (the blade)           may use: shared
     analysis  (blade in methods)    may use: shared, methods, model
@@ -66,7 +66,7 @@ def _layer(name: str) -> str:
     if len(parts) == 1:
         return "package"
     head = parts[1]
-    if head in ("conventions", "errors", "jit", "reporting"):
+    if head in ("conventions", "errors", "jit", "progress", "reporting"):
         return "shared"
     if head == "__main__":
         return "cli"

@@ -43,6 +43,8 @@ from ..model.blade import Blade
 from ..model.forward_trim import TRIM_TARGETS, ForwardFlightTrim, forward_flight_trim
 from ..model.parameters import BladeParameters
 from ..methods.proof import Proof
+from ..methods.start_set import StartSet, start_set
+from ..progress import report
 from ..model.steady import refine_motion, tabulate_motion
 from .floquet import blade_floquet
 from .functions import quadratic_function
@@ -60,7 +62,10 @@ FUNCTIONS = ("auto", "quadratic") + FAMILIES
 class Candidate:
     """One function :func:`certify` tried: its family, verdict, bound and start radius (scaled norm);
     for a designed family, ``tried`` holds the scenario program's attempts ``(lam, A, designed)``
-    (:attr:`rotorlyap.methods.scenario.Design.tried`: where its search stopped, and why)."""
+    (:attr:`rotorlyap.methods.scenario.Design.tried`: where its search stopped, and why);
+    ``start_set``, where certified, the reach of the certified start set along each state
+    component, scaled norm, the smaller sign at the worst start azimuth
+    (:attr:`rotorlyap.methods.start_set.StartSet.axis_reach`; empty where not certified)."""
 
     function: str
     certified: bool
@@ -68,6 +73,7 @@ class Candidate:
     start_region: float
     message: str
     tried: tuple = ()
+    start_set: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -110,6 +116,11 @@ class Certificate:
     lyapunov : object or None
         The function itself (``W``, ``dW``, ``f``), for a falsifier or a figure; None where none
         was built.
+    start_set : StartSet or None
+        Where certified: the start set ``{||x|| < A, W(psi0, x) < alpha}`` that the sound rule
+        certifies, measured along the signed hinge axes at every start azimuth
+        (:func:`rotorlyap.methods.start_set.start_set`); it holds the ball ``start_region`` and
+        reaches further along most hinges. None where nothing is certified.
     """
 
     certified: bool
@@ -126,10 +137,11 @@ class Certificate:
     function: str = "quadratic"
     candidates: tuple = ()
     lyapunov: object | None = None
+    start_set: StartSet | None = None
 
-    def _per_hinge(self, radius: float) -> dict:
+    def _per_hinge(self, radius) -> dict:
         omega = self.trim.params.rotor_speed
-        a = np.degrees(self.scales) * radius
+        a = np.degrees(self.scales) * np.broadcast_to(radius, self.scales.shape)
         return {h: (float(a[i]), float(a[i + 3] * omega)) for i, h in enumerate(HINGES)}
 
     @property
@@ -137,6 +149,12 @@ class Certificate:
         """``{hinge: (deg, deg/s)}``: a disturbance of one hinge alone, angle or rate, within these
         is inside the start region (a combined disturbance must satisfy the scaled norm)."""
         return self._per_hinge(self.start_region)
+
+    @property
+    def start_set_per_hinge(self) -> dict:
+        """``{hinge: (deg, deg/s)}``: how far the certified start set reaches along each hinge
+        angle and rate alone (the smaller sign, the worst start azimuth); empty if not certified."""
+        return {} if self.start_set is None else self._per_hinge(self.start_set.axis_reach)
 
     @property
     def bound_per_hinge(self) -> dict:
@@ -159,8 +177,10 @@ class Certificate:
         if not self.certified:
             return head + "\n  " + self.message
         fmt = lambda d: ", ".join(f"{h} {v[0]:.2f} deg / {v[1]:.1f} deg/s" for h, v in d.items())  # noqa: E731
-        lines = [head, f"  start within: {fmt(self.start_region_per_hinge)}",
-                 f"  stays within: {fmt(self.bound_per_hinge)}"]
+        lines = [head, f"  start within (ball lambda0): {fmt(self.start_region_per_hinge)}"]
+        if self.start_set is not None:
+            lines.append(f"  start set, each hinge alone: {fmt(self.start_set_per_hinge)}")
+        lines.append(f"  stays within: {fmt(self.bound_per_hinge)}")
         if self.proof is not None:
             if self.proof.proved:
                 lines += [f"  proved (ball arithmetic): start within {fmt(self._per_hinge(self.proof.min_lambda0))}",
@@ -226,14 +246,17 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     if verify and function in FAMILIES:
         raise ValueError(f"verify=True proves the quadratic function only; function={function!r} "
                          "gives a numerical certificate (use verify=False, or function='quadratic')")
+    report(f"trim ({condition}, mu = {float(mu):g})")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
+    report("steady motion" + (" (refined by shooting)" if mu and verify else ""))
     if mu == 0.0:
         steady = trim.steady
     elif verify:
         steady = refine_motion(Blade(trim.params, mu), trim.motion)
     else:
         steady = tabulate_motion(trim.motion)
+    report("Floquet exponents")
     growth = float(blade_floquet(trim.params, mu, steady=trim.steady).exponents.real.max())
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
     A_quadratic = DEFAULT_A if A is None else float(A)
@@ -268,22 +291,40 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         return res, functions[-1], res.message
 
     tried = []
-    for family in families:
+    for k, family in enumerate(families):
+        report(f"candidate {k + 1} of {len(families)}: the {family} function")
         res, fun, message = one(family)
         ok = res is not None and bool(np.all(res.stable))
         lam = float(np.min(res.lambda0)) if ok else 0.0
         lam = lam if math.isfinite(lam) else 0.0
         attempts = tuple(fun.design.tried) if family in FAMILIES and fun is not None else ()
-        tried.append((family, res, fun, Candidate(family, ok, float(res.A) if ok else 0.0, lam, message, attempts)))
-    best = max(tried, key=lambda item: (item[3].certified, item[3].start_region))
-    family, res, fun, cand = best
+        if ok:
+            report(f"the {family} function's start set")
+        reach = _start_set(fun, res, family) if ok else None
+        tried.append((family, res, fun, reach,
+                      Candidate(family, ok, float(res.A) if ok else 0.0, lam, message, attempts,
+                                tuple(float(v) for v in reach.axis_reach) if reach is not None else ())))
+    best = max(tried, key=lambda item: (item[4].certified, item[4].start_region))
+    family, res, fun, reach, cand = best
     proof = None
     if verify and fun is not None:
+        report("proof (ball arithmetic)")
         proof = prove_blade(fun, cand.bound if cand.certified else A_quadratic)
     return Certificate(certified=cand.certified, mu=mu, condition=condition, trim=trim, growth_rate=growth,
                        bound=cand.bound, start_region=cand.start_region, scales=a, result=res,
                        message=cand.message, proof=proof, function=family,
-                       candidates=tuple(item[3] for item in tried), lyapunov=fun)
+                       candidates=tuple(item[4] for item in tried), lyapunov=fun, start_set=reach)
+
+
+def _start_set(fun, res: TechnicalStabilityResult, family: str) -> StartSet | None:
+    """The start set a sound-rule certificate covers, along the signed hinge axes at every start
+    azimuth (one where ``W`` does not depend on it); None for the paper's rule."""
+    if res.rule != "sound":
+        return None
+    quadratic = family == "quadratic"
+    autonomous = fun.constant if quadratic else fun.autonomous
+    return start_set(fun.W, res.level, res.A, res.scales, period=res.period, autonomous=autonomous,
+                     quadratic=quadratic)
 
 
 class _NotDesigned(Exception):

@@ -8,22 +8,22 @@
   :func:`rotorlyap.analysis.region.stable_region`; every number recomputed;
 * :func:`anatomy`: a designed function taken apart (the energy's share, where ``W'`` turns
   positive beyond the bound);
-* :func:`figure_reach`: the certified start region along each hinge angle and rate as a fraction
-  of the simulated region, per function and case;
-* :func:`figure_slices`: the simulated flap-lag and flap-pitch slices with the certified start
-  regions drawn in.
+* :func:`figure_reach`: the certified start set and its inner ball along each hinge angle and
+  rate as a fraction of the simulated region, per function and case;
+* :func:`figure_slices`: the simulated flap-lag and flap-pitch slices with the default
+  certificate's start set and start ball drawn in.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..analysis.certify import Candidate, certify
 from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
-from ..analysis.region import StableRegion, stable_region
+from ..analysis.region import SLICES, StableRegion, stable_region
 from ..analysis.sweep import process_map
 from ..conventions import HINGES, STATE_NAMES
 from ..methods.sampling import unit_sphere_points
@@ -31,8 +31,8 @@ from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
 __all__ = ["ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "CASES", "Case", "CaseResult", "LargeDisturbances",
-           "ProofLimit", "WIDTH_BOUNDS", "anatomy", "figure_reach", "figure_slices", "large_disturbances",
-           "proof_limit"]
+           "ProofLimit", "SET_SLICE_POINTS", "WIDTH_BOUNDS", "anatomy", "figure_reach", "figure_slices",
+           "large_disturbances", "proof_limit", "set_slice"]
 
 
 @dataclass(frozen=True)
@@ -115,6 +115,11 @@ class CaseResult:
     proof : ProofLimit or None
         The proof of the designed function and what limits it (:func:`proof_limit`; None where
         the certificate's function is not a quadratic form in hover).
+    set_slices : dict
+        The default certificate's start set in the planes of :data:`rotorlyap.analysis.region.SLICES`
+        at the azimuth 0 (:func:`set_slice`): name -> ``(axis, inside)``, the grid of both
+        coordinates (scaled norm, ``(k,)``) and where a start (rates zero) lies in the set
+        (``(k, k)`` bool, rows the first coordinate); empty where nothing is certified.
     """
 
     case: Case
@@ -126,6 +131,7 @@ class CaseResult:
     region: StableRegion
     anatomy: Anatomy | None = None
     proof: ProofLimit | None = None
+    set_slices: dict = field(default_factory=dict)
 
     def candidate(self, function: str) -> Candidate | None:
         """The candidate of ``function`` (None if not tried)."""
@@ -142,11 +148,20 @@ class CaseResult:
         return self.per_component(1.0) * self.region.component_extent
 
     def reach(self, function: str) -> np.ndarray:
-        """Start region of ``function`` over the yardstick, per component, -, (6,) (NaN: not tried)."""
+        """Start ball (``lambda0``) of ``function`` over the yardstick, per component, -, (6,) (NaN:
+        not tried)."""
         c = self.candidate(function)
         if c is None:
             return np.full(6, np.nan)
         return c.start_region / self.region.component_extent
+
+    def set_reach(self, function: str) -> np.ndarray:
+        """Start set of ``function`` (:attr:`rotorlyap.analysis.certify.Candidate.start_set`, along each
+        component alone) over the yardstick, -, (6,) (NaN: not tried or not certified)."""
+        c = self.candidate(function)
+        if c is None or not c.start_set:
+            return np.full(6, np.nan)
+        return np.asarray(c.start_set) / self.region.component_extent
 
     def limit(self, function: str) -> tuple[float, float]:
         """For a designed function: the start radius of the design the certificate rests on (the
@@ -277,6 +292,24 @@ def _is_quadratic_form(fun) -> bool:
     return True
 
 
+#: Grid points per coordinate of :func:`set_slice` (over ``[-A, A]`` of the scaled norm).
+SET_SLICE_POINTS = 161
+
+
+def set_slice(fun, level: float, A: float, scales, i: int, j: int, *, psi: float = 0.0,
+              n: int = SET_SLICE_POINTS) -> tuple[np.ndarray, np.ndarray]:
+    """The start set ``{||x|| < A, W(psi, x) < level}`` in the plane of state components ``i`` and
+    ``j`` (the others zero): ``(axis, inside)``, the grid of both coordinates, scaled norm, ``(n,)``,
+    and where the grid's points lie in the set, ``(n, n)`` bool (rows: component ``i``)."""
+    axis = A * np.linspace(-1.0, 1.0, n)
+    yi, yj = np.meshgrid(axis, axis, indexing="ij")
+    y = np.zeros((n * n, len(scales)))
+    y[:, i], y[:, j] = yi.ravel(), yj.ravel()
+    w = fun.W(np.full(n * n, float(psi)), y * np.asarray(scales))
+    inside = (w < level) & (np.hypot(y[:, i], y[:, j]) < A)
+    return axis, inside.reshape(n, n)
+
+
 def _compute(task: tuple[str, Case]):
     """One task of a worker process: ``("certificate", case)`` or ``("region", case)``."""
     kind, case = task
@@ -287,8 +320,10 @@ def _compute(task: tuple[str, Case]):
     parts = anatomy(cert.lyapunov, cert.bound, cert.start_region) if designed else None
     proof = (proof_limit(cert.lyapunov)
              if designed and cert.lyapunov.autonomous and _is_quadratic_form(cert.lyapunov) else None)
+    slices = ({name: set_slice(cert.lyapunov, cert.result.level, cert.bound, cert.scales, i, j)
+               for name, (i, j) in SLICES.items()} if cert.certified else {})
     return (cert.trim.params.rotor_speed, np.asarray(cert.scales, dtype=float), cert.growth_rate, cert.function,
-            tuple(cert.candidates), parts, proof)
+            tuple(cert.candidates), parts, proof, slices)
 
 
 _HINGE_WORDS = tuple(f"{h} angle" for h in HINGES) + tuple(f"{h} rate" for h in HINGES)
@@ -306,6 +341,11 @@ _NAMES = {"energy": "augmented energy", "quadratic": "quadratic function", "poly
 
 def _sig(v: float, digits: int = 2) -> float:
     return float(f"{v:.{digits}g}") if math.isfinite(v) else v
+
+
+def _pct(fraction: float) -> str:
+    """A fraction as a percentage of two significant digits; below 0.01 % as "< 0.01"."""
+    return "< 0.01" if 100 * fraction < 0.01 else f"{_sig(100 * fraction):g}"
 
 
 @dataclass(frozen=True)
@@ -326,8 +366,10 @@ class LargeDisturbances:
             rows = [("simulated: returns from", r.simulated, r.region.hit_s_max[:6] & r.region.hit_s_max[6:])]
             for fn, name in (("energy", "augmented energy"), ("quadratic", "quadratic function")):
                 c = r.candidate(fn)
+                if c is not None and c.start_set:
+                    rows.append((f"{name}: start set", r.per_component(np.asarray(c.start_set)), np.zeros(6, bool)))
                 if c is not None:
-                    rows.append((f"{name}: certified start", r.per_component(c.start_region), np.zeros(6, bool)))
+                    rows.append((f"{name}: start ball", r.per_component(c.start_region), np.zeros(6, bool)))
             for i, (what, vals, cap) in enumerate(rows):
                 cells = [("&ge; " if k else "") + f"{_sig(v):g}" for v, k in zip(vals, cap)]
                 lines.append(f"| {r.case.label if i == 0 else ''} | {what} | " + " | ".join(cells) + " |")
@@ -340,10 +382,13 @@ class LargeDisturbances:
             out.append(f"{r.case.label}: certified by the {_NAMES[r.chosen]} "
                        f"(growth {r.growth_rate:.3f} per rev)")
             for c in r.candidates:
-                reach = r.reach(c.function)
+                reach, whole = r.reach(c.function), r.set_reach(c.function)
                 out.append(f"  {c.function}: certified={c.certified}, A = {_sig(c.bound):g}, "
-                           f"lambda0 = {_sig(c.start_region):g}, of the simulated region: "
-                           f"{_sig(100 * np.nanmin(reach)):g}-{_sig(100 * np.nanmax(reach)):g} %")
+                           f"lambda0 = {_sig(c.start_region):g}, of the simulated region: ball "
+                           f"{_pct(np.nanmin(reach))}-{_pct(np.nanmax(reach))} %"
+                           + (f", start set {_pct(np.nanmin(whole))}-{_pct(np.nanmax(whole))} % "
+                              f"(least along the {_HINGE_WORDS[int(np.nanargmin(whole))]})"
+                              if c.start_set else ""))
                 if c.tried:
                     best, fail = r.limit(c.function)
                     out.append(f"    designed for lambda = {_sig(best):g}; the program did not meet {_sig(fail):g}")
@@ -382,6 +427,12 @@ class LargeDisturbances:
             f[f"ch11_{k}_sim_flap"] = _sig(r.simulated[0])
             f[f"ch11_{k}_q_flap"] = _sig(r.per_component(q.start_region)[0])
             f[f"ch11_{k}_q_reach"] = _sig(100 * np.nanmin(r.reach("quadratic")))
+            whole = r.set_reach(r.chosen)
+            if np.any(np.isfinite(whole)):
+                f[f"ch11_{k}_set_reach"] = _sig(100 * np.nanmin(whole))
+                f[f"ch11_{k}_ball_reach"] = _sig(100 * np.nanmin(r.reach(r.chosen)))
+                f[f"ch11_{k}_set_weakest"] = _HINGE_WORDS[int(np.nanargmin(whole))]
+                f[f"ch11_{k}_set_flap"] = _sig(r.per_component(np.asarray(r.candidate(r.chosen).start_set))[0])
             if e is not None:
                 f[f"ch11_{k}_e_flap"] = _sig(r.per_component(e.start_region)[0])
                 f[f"ch11_{k}_e_reach"] = _sig(100 * np.nanmin(r.reach("energy")))
@@ -430,7 +481,9 @@ class LargeDisturbances:
             items = [("simulated", r.simulated)]
             for fn in ("energy", "quadratic"):
                 c = r.candidate(fn)
-                items.append((f"{fn} start", r.per_component(c.start_region) if c else np.full(6, np.nan)))
+                items.append((f"{fn} start set", r.per_component(np.asarray(c.start_set))
+                              if c and c.start_set else np.full(6, np.nan)))
+                items.append((f"{fn} start ball", r.per_component(c.start_region) if c else np.full(6, np.nan)))
             for what, vals in items:
                 rows["case"].append(r.case.key)
                 rows["quantity"].append(what)
@@ -459,64 +512,71 @@ def large_disturbances(cases=CASES, *, workers: int | None = None) -> LargeDistu
     out = {tasks[i]: v for i, v in zip(order, done)}
     results = []
     for c in cases:
-        omega, scales, growth, chosen, candidates, parts, proof = out[("certificate", c)]
-        results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts, proof))
+        omega, scales, growth, chosen, candidates, parts, proof, slices = out[("certificate", c)]
+        results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts, proof,
+                                  slices))
     return LargeDisturbances(tuple(results))
 
 
-_FUNCTION_STYLE = {"energy": ("augmented energy", "o", "-"), "quadratic": ("quadratic function", "s", "--")}
+_FUNCTION_STYLE = {"energy": ("augmented energy", "o", -1), "quadratic": ("quadratic function", "s", 1)}
 
 
 def figure_reach(data: LargeDisturbances):
-    """Each function's certified start region over the simulated region, per state component and case."""
-    fig, ax = subplots(figsize=(6.6, 3.6))
+    """Each function's certified start set (marker) and its inner ball (tick, joined by a line) over
+    the simulated region, per state component and case."""
+    fig, ax = subplots(figsize=(6.6, 3.8))
     x = np.arange(6)
     n = len(data.results)
     width = 0.8 / n
     for j, r in enumerate(data.results):
         color = CG_COLORS.get(r.case.blade[1], "0.3") if r.case.mu == 0 else ("#0072B2" if r.case.mu < 0.15 else "#56B4E9")
-        for fn, (name, marker, ls) in _FUNCTION_STYLE.items():
-            reach = 100 * r.reach(fn)
-            if np.all(np.isnan(reach)):
+        for fn, (name, marker, side) in _FUNCTION_STYLE.items():
+            whole, ball = 100 * r.set_reach(fn), 100 * r.reach(fn)
+            if np.all(np.isnan(whole)):
                 continue
-            xs = x - 0.4 + width * (j + 0.5)
-            ax.plot(xs, reach, marker=marker, ls="none", color=color, ms=5,
-                    mfc=color if fn == "energy" else "white",
-                    label=f"{r.case.label}, {name}")
+            xs = x - 0.4 + width * (j + 0.5) + side * width / 5
+            ax.vlines(xs, ball, whole, color=color, lw=0.8)
+            ax.plot(xs, ball, marker="_", ls="none", color=color, ms=6, mew=1.2)
+            ax.plot(xs, whole, marker=marker, ls="none", color=color, ms=5,
+                    mfc=color if fn == "energy" else "white", label=f"{r.case.label}, {name}")
     ax.set_yscale("log")
     ax.axhline(100, color="0.5", lw=0.8)
     ax.axhline(50, color="0.5", lw=0.8, ls=":")
     ax.set_xticks(x, [f"{h}" for h in HINGES] + [f"{h} rate" for h in HINGES])
     ax.set_ylabel("certified start / simulated region (%)")
-    ax.set_ylim(0.05, 200)
+    ax.set_ylim(0.005, 200)
     ax.grid(axis="y", which="major", lw=0.4, color="0.85")
     fig.legend(loc="upper center", ncol=2, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 1.0))
     return finish(fig, rect=(0, 0, 1, 0.72))
 
 
 def figure_slices(data: LargeDisturbances, keys=("forward", "backward")):
-    """The simulated slices (flap-lag, flap-pitch) with the certified start regions, per case."""
+    """The simulated slices (flap-lag, flap-pitch) with the default certificate's start set and its
+    inner ball, per case."""
     fig, axes = subplots(len(keys), 2, figsize=(6.6, 3.0 * len(keys)), squeeze=False)
     t = np.linspace(0, 2 * np.pi, 200)
     for row, key in zip(axes, keys):
         r = data[key]
+        chosen = r.candidate(r.chosen)
         for ax, name in zip(row, ("flap-lag", "flap-pitch")):
             s = r.region.slices[name]
             di, dj = np.degrees(r.scales[s.i]), np.degrees(r.scales[s.j])
             X, Y = np.meshgrid(s.axis_j * dj, s.axis_i * di)
             ax.contourf(X, Y, s.stable.astype(float), levels=[-0.5, 0.5, 1.5], colors=["white", "#CDE8D8"])
             ax.contour(X, Y, s.stable.astype(float), levels=[0.5], colors=["#009E73"], linewidths=1.0)
-            for fn, (label, _, ls) in _FUNCTION_STYLE.items():
-                c = r.candidate(fn)
-                if c is None or not c.certified:
-                    continue
-                ax.plot(c.start_region * dj * np.cos(t), c.start_region * di * np.sin(t), ls=ls, color="black",
-                        lw=1.0, label=f"{label}: certified start")
+            if name in r.set_slices and chosen is not None and chosen.certified:
+                axis, inside = r.set_slices[name]
+                ax.contour(axis * dj, axis * di, inside.astype(float), levels=[0.5], colors=["black"],
+                           linewidths=1.0)
+                lam = chosen.start_region
+                ax.plot(lam * dj * np.cos(t), lam * di * np.sin(t), ls="--", color="black", lw=0.9)
             ax.set_xlabel(f"{name.split('-')[1]} angle (deg)")
             ax.set_ylabel("flap angle (deg)")
             ax.set_title(f"{r.case.label}: {name}", fontsize=9)
-    handles, labels = axes[0, 0].get_legend_handles_labels()
+    from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
-    handles.append(Patch(facecolor="#CDE8D8", edgecolor="#009E73", label="simulated: returns"))
+    handles = [Patch(facecolor="#CDE8D8", edgecolor="#009E73", label="simulated: returns"),
+               Line2D([], [], color="black", lw=1.0, label="certified start set"),
+               Line2D([], [], color="black", lw=0.9, ls="--", label="its inner ball (lambda0)")]
     fig.legend(handles=handles, loc="upper center", ncol=3, fontsize=7, frameon=False)
     return finish(fig, rect=(0, 0, 1, 0.94))

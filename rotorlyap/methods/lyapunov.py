@@ -35,6 +35,7 @@ import numpy as np
 
 from ._checks import positive_float as _positive_float
 from ._checks import positive_int as _positive_int
+from ..progress import report
 from .polish import T_MIN, polish
 from .sampling import Extremum, PsiFree, sphere_extremum, unit_sphere_points
 from .sampling import psi_free as _is_psi_free
@@ -525,6 +526,7 @@ def _start_radii(sys, psi, A_used, level, scales, dirs, common, n_radii, n_bisec
     radii = A_used * np.arange(1, n_radii + 1) / n_radii
     sup_w = np.empty((n_psi, n_radii))
     for i, radius in enumerate(radii):
+        report("sound rule: start radii", i + 1, n_radii + n_bisect)
         sup_w[:, i] = sphere_extremum(sys.w, psi, radius, scales, dirs, **common).value
     running = np.maximum.accumulate(sup_w, axis=1)
     reach = running >= level
@@ -532,9 +534,10 @@ def _start_radii(sys, psi, A_used, level, scales, dirs, common, n_radii, n_bisec
     lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
     hi = np.where(first < n_radii, radii[np.minimum(first, n_radii - 1)], A_used)
     todo = first < n_radii
-    for _ in range(n_bisect):
+    for k in range(n_bisect):
         if not todo.any():
             break
+        report("sound rule: start radii", n_radii + k + 1, n_radii + n_bisect)
         mid = 0.5 * (lo + hi)
         s = np.full(n_psi, np.inf)
         s[todo] = sphere_extremum(sys.w, psi[todo], mid[todo], scales, dirs, **common).value
@@ -656,9 +659,11 @@ def _min_over_period(g: Callable[[np.ndarray], np.ndarray], period: float, n: in
 
 
 def _ray_level(sys, psi: np.ndarray, u: np.ndarray, scales: np.ndarray, c: float, A: float,
-               w_matrix, n_scan: int = 16, n_bisect: int = 40) -> np.ndarray:
+               w_matrix, n_scan: int = 16, n_bisect: int = 40, below: bool = False) -> np.ndarray:
     """First radius along each ray ``r u`` (``u`` unit, scaled coordinates) where ``W >= c``,
-    at most ``A`` (``A`` where ``W < c`` on the whole ray up to ``A``)."""
+    at most ``A`` (``A`` where ``W < c`` on the whole ray up to ``A``). ``below=True`` returns
+    the lower end of the final bracket instead (``W < c`` there and at every scanned radius
+    before it, 1e-13 ``A`` or less below the crossing): the side a start set may use."""
     if w_matrix is not None:  # W = r^2 u^T S u = r^2 W(psi, u a): no matrix needed
         q = sys.w(psi, u * scales)
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -704,7 +709,7 @@ def _ray_level(sys, psi: np.ndarray, u: np.ndarray, scales: np.ndarray, c: float
         st = stale[idx]
         stale[idx] = np.where(up, np.where(st > 0, st + 1, 1), np.where(st < 0, st - 1, -1))
         stale[idx] = np.where(bad, 0, stale[idx])
-    return hi
+    return np.where(first < n_scan, lo, hi) if below else hi
 
 
 def band_max_dw(f: Function, W: Function, dW: Function | None, c: float, A: float, *,
@@ -931,7 +936,8 @@ def _like(model, fun):
 
 
 class _Level:
-    """The searches of ``W`` that the sound rule needs (:func:`_sound`, :func:`check_band`):
+    """The searches of ``W`` that the sound rule needs (:func:`_sound`,
+    :func:`rotorlyap.methods.certificate_check.check_claims`):
     its infimum on a sphere over the period (the level), the size of ``|W|`` on a sphere (the
     margin's scale) and, with the shell, the largest ball inside a level set. Closed forms for a
     quadratic ``W`` (``w_matrix``), else the engine's sphere searches."""
@@ -1061,7 +1067,9 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
 
     def passes(r: float, thorough: bool = False):
         """(h) on the band of radius r (:func:`_band_searches`; ``thorough``: the final check of
-        the certified bound, :func:`check_band`)."""
+        the certified bound, which :func:`rotorlyap.methods.certificate_check.check_claims` runs
+        again on a stored certificate)."""
+        report(f"sound rule: {'final check of ' if thorough else ''}the band at bound {r:.3g}")
         alpha = alpha_of(r)
         need = -margin * w_size(r)
         if not alpha > 0:

@@ -43,6 +43,7 @@ from scipy.optimize import linprog
 
 from ._checks import positive_float as _positive_float
 from ._checks import positive_int as _positive_int
+from ..progress import report
 from .lyapunov import band_max_dw
 from .sampling import sphere_extremum, unit_sphere_points
 
@@ -405,6 +406,8 @@ def design(basis: Basis, f: Function, scales, A: float, lam: float, *, period: f
     clean = False
     grid = period * np.arange(n_azimuths) / n_azimuths if periodic else np.zeros(1)
     for r in range(rounds + 1):
+        report(f"design: start radius {lam:.3g}, bound {A:.3g}{', thorough' if thorough else ''}: round",
+               r + 1, rounds + 1)
         c_new, t_new = _solve(Vs / size, Vl / size, Db / size, wb, level_margin, coefficient_bound)
         if c_new is None:
             break
