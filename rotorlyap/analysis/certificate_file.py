@@ -654,7 +654,10 @@ class Verification:
     path : str
         The file checked.
     holds : bool
-        Every check holds: the file is a numerical certificate (with ``prove=True``, also proved).
+        Every check holds: the file is a numerical certificate (with ``prove=True``, also proved):
+        every motion that starts, at any azimuth, with ``||x|| < A`` and ``W < c`` (the start set
+        of :func:`rotorlyap.methods.start_set.start_set`, which holds the balls ``lambda0``) stays
+        within ``||x|| < A``.
     checks : tuple of Check
         ``steady motion``, ``level``, ``start``, ``band`` (and ``proof``), each with ``holds``,
         ``value``, ``limit``, ``margin``, ``meaning`` and ``detail``
