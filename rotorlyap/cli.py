@@ -444,7 +444,7 @@ def _verify_parser(sub) -> None:
     v.add_argument("file", type=Path, metavar="FILE", help="the certificate file (JSON)")
     v.add_argument("--prove", action="store_true",
                    help="also prove a quadratic function's certificate by ball arithmetic (seconds in hover, "
-                        "minutes in forward flight)")
+                        "minutes in forward flight; an error, exit status 1, for a designed function)")
 
 
 # ---------------------------------------------------------------------- shared helpers

@@ -749,7 +749,8 @@ def _proof_check(stored: StoredCertificate) -> Check:
     proof = prove_blade(stored.function, stored.A)
     holds = bool(proof.proved)
     return Check("proof", holds, float(proof.A), stored.A, float(proof.A / stored.A) if holds else -np.inf,
-                 "proved by ball arithmetic for the model in exact arithmetic (rotorlyap.analysis.proof.prove_blade)",
+                 "the same function proves, by ball arithmetic, a certificate for the model in exact arithmetic up to "
+                 "the bound shown, usually below the numerical one (rotorlyap.analysis.proof.prove_blade)",
                  f"proved bound {proof.A:.3g}, start radius {proof.min_lambda0:.3g} (scaled norm), the numerical "
                  f"bound {stored.A:.3g}: {proof.message}", "proved bound / the numerical bound")
 
