@@ -9,8 +9,8 @@ traceback).
 
 from __future__ import annotations
 
-import copy
 import json
+import math
 import os
 import subprocess
 import sys
@@ -284,11 +284,24 @@ def test_prove_adds_the_ball_arithmetic_proof_of_a_quadratic_function(quadratic)
 
 @pytest.mark.slow
 def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_refused(tmp_path):
-    """The augmented energy in hover (tens of seconds): saved, verified with its own coefficients
-    (bit-equal), the final check finding the engine's worst W'; one quadratic coefficient raised
-    (and the start radii halved, which keeps the start claim) is refused by the band check alone."""
-    cert = rotorlyap.certify(rotorlyap.BladeParameters.table_i("forward"), 0.0, condition="none", function="energy")
-    assert cert.certified and cert.function == "energy"
+    """The augmented energy in hover, designed at one start radius (0.5, A = 2: a few seconds, where
+    certify's search of the largest takes half a minute) and certified by the engine: saved,
+    verified with its own coefficients (bit-equal), the final check finding the engine's worst W';
+    one quadratic coefficient raised (and the start radii halved, which keeps the start claim) is
+    refused by the band check alone, one azimuth's start radius raised by the start check."""
+    from rotorlyap.analysis.certify import Certificate
+    from rotorlyap.analysis.nonlinear_functions import designed_function
+    from rotorlyap.model.forward_trim import forward_flight_trim
+
+    trim = forward_flight_trim(rotorlyap.BladeParameters.table_i("forward"), 0.0, "none")
+    fun = designed_function(rotorlyap.Blade(trim.params, 0.0), trim.steady, "energy", lam_start=0.5, lam_max=0.5,
+                            ratios=(4.0,))
+    res = rotorlyap.blade_stability(trim.params, 0.0, lyapunov=lambda blade, steady: fun, steady=trim.steady,
+                                    n_psi=8)
+    assert fun.designed and np.all(res.stable)
+    cert = Certificate(certified=True, mu=0.0, condition="none", trim=trim, growth_rate=math.nan, bound=res.A,
+                       start_region=float(res.lambda0.min()), scales=fun.scales, result=res, message=res.message,
+                       function="energy", lyapunov=fun)
     path = cert.save(tmp_path / "hover_energy.json")
     stored = read_certificate(path)
     assert np.array_equal(stored.function.function.coefficients, cert.lyapunov.function.coefficients)
