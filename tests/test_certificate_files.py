@@ -94,7 +94,8 @@ def _scale(key: str, factor: float):
     return edit
 
 
-def test_a_coefficient_edited_so_that_w_rate_turns_positive_on_the_band_is_refused_by_the_band_check(quadratic, tmp_path):
+def test_a_coefficient_edited_so_that_w_rate_turns_positive_on_the_band_is_refused_by_the_band_check(quadratic,
+                                                                                                      tmp_path):
     """The pitch-rate weight of P raised: W grows (the level and a halved start region still hold),
     but W' >= -margin on the band."""
     def edit(d):

@@ -154,7 +154,8 @@ def _blade_files(params: BladeParameters) -> dict:
             differ = [f.name for f in fields(params) if getattr(back, f.name) != getattr(params, f.name)]
             raise ValueError(f"the blade cannot be stored in a certificate file: its parameter file reads back "
                              f"other values of {differ}")
-        files = {p.name: p.read_text(encoding="utf-8") for p in sorted(Path(tmp).iterdir()) if p.name != _PARAMETER_FILE}
+        files = {p.name: p.read_text(encoding="utf-8") for p in sorted(Path(tmp).iterdir())
+                 if p.name != _PARAMETER_FILE}
         return {"parameters_toml": target.read_text(encoding="utf-8"), "files": files}
 
 
@@ -737,7 +738,8 @@ def _steady_check(stored: StoredCertificate) -> Check:
                  float(1.0 - rel / STEADY_RESIDUAL_TOL),
                  "the stored steady motion solves the blade's equations (the disturbance is measured from it)",
                  f"largest residual |xi' - h(psi, xi)| at the {psi.size} tabulated azimuths is "
-                 f"{format_small(float(residual[j]), 1e-10)} per rad (scaled norm) at psi = {np.degrees(psi[j]):.4g} deg, "
+                 f"{format_small(float(residual[j]), 1e-10)} per rad (scaled norm) at psi = "
+                 f"{np.degrees(psi[j]):.4g} deg, "
                  f"relative {format_small(rel, 1e-10)} (to the largest rate {rates:.3g} or 1); it must be below "
                  f"{STEADY_RESIDUAL_TOL:g}" + ("" if holds else ": the table does NOT solve the equations"),
                  "relative residual / the tolerance")
