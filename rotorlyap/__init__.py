@@ -38,6 +38,7 @@ _PUBLIC = {
     "quadratic_function": "analysis.functions", "designed_function": "analysis.nonlinear_functions",
     "optimised_quadratic_function": "analysis.functions", "blade_floquet": "analysis.floquet",
     "certify": "analysis.certify", "Certificate": "analysis.certify", "prove_blade": "analysis.proof",
+    "verify": "analysis.certificate_file", "Verification": "analysis.certificate_file",
     "forward_flight_trim": "model.forward_trim",
     "sweep": "analysis.sweep", "SweepResult": "analysis.sweep",
     "stable_region": "analysis.region", "StableRegion": "analysis.region",
@@ -47,7 +48,7 @@ _PUBLIC = {
     # shared conventions, errors and printing
     "DEFAULT_A": "conventions", "DEFAULT_SCALES": "conventions",
     "PAPER_TEST_DISTURBANCES": "conventions", "STATE_NAMES": "conventions",
-    "ConvergenceError": "errors", "NotAsymptoticallyStableError": "errors",
+    "ConvergenceError": "errors", "NotAsymptoticallyStableError": "errors", "CertificateFileError": "errors",
     "format_small": "reporting", "decade_above": "reporting",
 }
 

@@ -8,6 +8,11 @@
 ``python -m rotorlyap certify [--params FILE | --cg forward] --mu 0.1``
     :func:`rotorlyap.certify`: the trimmed helicopter, its own steady motion, the quadratic
     function and the sound rule; the certificate per hinge in deg and deg/s, printed as JSON;
+``python -m rotorlyap certify ... --save cert.json`` and ``python -m rotorlyap verify cert.json [--prove]``
+    the certificate written as a file (:meth:`rotorlyap.Certificate.save`), and checked again from
+    nothing but the file (:func:`rotorlyap.verify`): the checks printed, exit status 0 if every
+    claim holds, 1 if one fails, 2 for a file that cannot be read as a certificate (a one-line
+    message);
 ``python -m rotorlyap sweep --mu 0:0.3:0.1 --cg forward,backward --set lag_damping=5000,10000 --out t.csv``
     :func:`rotorlyap.analysis.sweep.sweep`: the certificate over a full-factorial grid, one table
     (CSV or JSON), on every core or on a Dask cluster (``--scheduler``), with a progress bar;
@@ -266,7 +271,7 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
         description="Technical stability of the Narkiewicz & Lucjanek (1989) rotor blade by "
                     "Liapunov's direct method.",
     )
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{analyse,certify,sweep,modes,simulate,figures}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{analyse,certify,verify,sweep,modes,simulate,figures}")
 
     a = sub.add_parser("analyse", help="one stability analysis of a blade, printed as JSON",
                        description="Run blade_stability for one blade and print the result as JSON. "
@@ -320,6 +325,10 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
                         "seconds in hover, minutes in forward flight; adds 'proof' to the JSON")
     c.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
                    help="also draw the certified start region and bound per hinge (deg, deg/s)")
+    c.add_argument("--save", type=Path, default=None, metavar="FILE.json",
+                   help="also write the certificate as a file that 'verify' checks from nothing "
+                        "(rotorlyap.Certificate.save; an error if nothing is certified)")
+    _verify_parser(sub)
 
     s = sub.add_parser("sweep", help="certify over a grid (mu, C.G., A, any parameter), one CSV/JSON table",
                        description="Run the certificate (as the certify command) at every point of a "
@@ -423,6 +432,19 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
     f.add_argument("--out", type=Path, required=True, help="output folder (created if missing)")
     f.add_argument("--quick", action="store_true", help="coarse grids (seconds, for a smoke test)")
     return parser
+
+
+def _verify_parser(sub) -> None:
+    v = sub.add_parser("verify", help="check a certificate file from nothing (rotorlyap.verify)",
+                       description="Rebuild the blade, the steady motion and the function of a certificate file "
+                                   "(written by 'certify --save') and check every claim again: the steady "
+                                   "motion against the equations, the level facts and condition (h) on the band "
+                                   "by the sound rule's final check. Exit status 0 if every claim holds, 1 if one "
+                                   "fails, 2 for a file that cannot be read as a certificate.")
+    v.add_argument("file", type=Path, metavar="FILE", help="the certificate file (JSON)")
+    v.add_argument("--prove", action="store_true",
+                   help="also prove a quadratic function's certificate by ball arithmetic (seconds in hover, "
+                        "minutes in forward flight; an error, exit status 1, for a designed function)")
 
 
 # ---------------------------------------------------------------------- shared helpers
@@ -680,8 +702,23 @@ def _certify(args) -> int:
         from .figures.blade_commands import plot_certificate
 
         data["plot"] = str(_save(plot_certificate(cert), args.plot))
+    if args.save is not None:
+        data["saved"] = str(cert.save(args.save))
     _dump(data)
     return 0
+
+
+def _verify(args) -> int:
+    from .analysis.certificate_file import verify
+    from .errors import CertificateFileError
+
+    try:
+        result = verify(args.file, prove=args.prove)
+    except (CertificateFileError, OSError) as exc:
+        print(f"rotorlyap verify: bad certificate file: {exc}", file=sys.stderr)
+        return 2
+    print(result.summary())
+    return 0 if result.holds else 1
 
 
 def _progress_listener():
@@ -888,8 +925,9 @@ def _figures(args) -> int:
     return 0
 
 
-_COMMANDS: dict[str, Callable[[Any], int]] = {"analyse": _analyse, "certify": _certify, "sweep": _sweep,
-                                              "modes": _modes, "simulate": _simulate, "figures": _figures}
+_COMMANDS: dict[str, Callable[[Any], int]] = {"analyse": _analyse, "certify": _certify, "verify": _verify,
+                                              "sweep": _sweep, "modes": _modes, "simulate": _simulate,
+                                              "figures": _figures}
 
 #: Commands that draw with matplotlib: the Agg backend (files only, no display) is chosen first.
 _DRAWING = ("modes", "simulate", "figures")

@@ -12,6 +12,10 @@ Two families, each a subclass of the built-in exception a caller would expect:
   Liapunov function about that motion exists. It carries the spectral radius of the monodromy
   matrix and the largest growth rate.
 
+A file that cannot be read as what it claims to be raises :class:`CertificateFileError` (a
+``ValueError``): a certificate file (:mod:`rotorlyap.analysis.certificate_file`) that is not JSON,
+is truncated, lacks a field or holds a bad value.
+
 One warning: :class:`TemplateValuesWarning`, for a parameter set of another rotor that keeps
 values of the paper's blade it was not given.
 
@@ -23,7 +27,7 @@ is allowed.
 from __future__ import annotations
 
 __all__ = [
-    "ConvergenceError", "EquilibriumError", "InflowConvergenceError",
+    "CertificateFileError", "ConvergenceError", "EquilibriumError", "InflowConvergenceError",
     "NotAsymptoticallyStableError", "PeriodicMotionError", "TemplateValuesWarning", "TrimError",
 ]
 
@@ -124,3 +128,10 @@ class TemplateValuesWarning(UserWarning):
     """A parameter set describes another rotor than the paper's but keeps blade fields of the
     Table I template (:func:`rotorlyap.model.parameters.field_origins`): values the user did not
     give, such as the pitch-flap coupling or the lag damper of the paper's blade."""
+
+
+class CertificateFileError(ValueError):
+    """A certificate file (:mod:`rotorlyap.analysis.certificate_file`) that cannot be read: not
+    JSON, truncated, of another format or version, a field missing, of the wrong type or shape, or
+    a non-finite number. The message names the file and the field and says what is allowed. (A
+    file that reads but whose claims do not hold is not an error: the checks refuse it.)"""

@@ -15,6 +15,9 @@
   followed over the advance ratio;
 * :mod:`~rotorlyap.analysis.certify`: :func:`certify`, the trim, the steady motion, the quadratic
   function and the sound rule in one call;
+* :mod:`~rotorlyap.analysis.certificate_file`: a certificate as one JSON file
+  (:meth:`Certificate.save`) and :func:`~rotorlyap.analysis.certificate_file.verify`, which checks
+  it from nothing but the file;
 * :mod:`~rotorlyap.analysis.proof`: :func:`prove_blade`, the quadratic function's certificate
   proved by ball arithmetic;
 * :mod:`~rotorlyap.analysis.sweep`: :func:`sweep`, certificates over a grid of blades and

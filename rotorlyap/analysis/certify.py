@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -159,6 +160,13 @@ class Certificate:
     def bound_per_hinge(self) -> dict:
         """``{hinge: (deg, deg/s)}``: the bound's extent along each hinge angle and rate."""
         return self._per_hinge(self.bound)
+
+    def save(self, path: str | Path) -> Path:
+        """Write the certificate as a JSON file that :func:`rotorlyap.verify` checks from nothing
+        (:func:`rotorlyap.analysis.certificate_file.save_certificate`); returns the path."""
+        from .certificate_file import save_certificate
+
+        return save_certificate(self, path)
 
     def summary(self) -> str:
         """Three lines: the verdict, the start region and the bound per hinge (0.01 deg, 0.1 deg/s)."""

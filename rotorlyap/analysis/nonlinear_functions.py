@@ -55,7 +55,7 @@ from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
 from .functions import EnergyFunction, energy_function
 
 __all__ = ["FAMILIES", "LAM_MAX", "LAM_START", "N_BISECT", "RATIOS", "DesignedFunction", "designed_function",
-           "energy_basis", "is_autonomous",
+           "energy_basis", "energy_reference", "is_autonomous",
            "mode_directions", "polynomial_basis"]
 
 FAMILIES = ("energy", "polynomial")
@@ -113,7 +113,27 @@ def _harmonics(blade: Blade, steady: SteadyMotion, harmonics: int | None) -> int
     return int(harmonics)
 
 
-def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | None = None) -> Basis:
+def energy_reference(blade: Blade, steady=None, *, scales=None) -> float:
+    """``H_ref``, J: the mean of the energy of the disturbed motion on the unit sphere of the scaled
+    norm (256 quasi-random directions at ``psi = 0``), by which :func:`energy_basis` divides it.
+
+    Raises
+    ------
+    ValueError
+        If it is not positive (the effective potential has no minimum at the steady motion).
+    """
+    a = _check_scales(scales)
+    fun = energy_function(blade, as_steady_motion(steady, blade))
+    u = unit_sphere_points(6, 256, 0)
+    size = float(np.mean(fun.W(np.zeros(u.shape[0]), u * a)))
+    if not (np.isfinite(size) and size > 0):
+        raise ValueError("the energy of the disturbed motion is not positive on the unit sphere "
+                         f"(mean {size:.3g} J): its effective potential is not a minimum at the steady motion")
+    return size
+
+
+def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | None = None,
+                 reference: float | None = None) -> Basis:
     """The augmented energy's basis: the energy of the disturbed motion and the quadratic forms.
 
     Parameters
@@ -129,6 +149,9 @@ def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | Non
     harmonics : int, optional
         Harmonics of the azimuth in the quadratic coefficients; default 0 where the disturbed
         blade is autonomous (:func:`is_autonomous`), else 1.
+    reference : float, optional
+        ``H_ref``, J, the energy's divisor (default :func:`energy_reference`; a stored function
+        is rebuilt with its own, :mod:`rotorlyap.analysis.certificate_file`).
 
     Returns
     -------
@@ -139,11 +162,9 @@ def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | Non
     a = _check_scales(scales)
     steady = as_steady_motion(steady, blade)
     fun = energy_function(blade, steady)
-    u = unit_sphere_points(6, 256, 0)
-    size = float(np.mean(fun.W(np.zeros(u.shape[0]), u * a)))
+    size = energy_reference(blade, steady, scales=a) if reference is None else float(reference)
     if not (np.isfinite(size) and size > 0):
-        raise ValueError("the energy of the disturbed motion is not positive on the unit sphere "
-                         f"(mean {size:.3g} J): its effective potential is not a minimum at the steady motion")
+        raise ValueError(f"the energy's reference H_ref must be finite and > 0 J, got {reference!r}")
     energy = Basis(("energy",), lambda psi, x: (fun.W(psi, x) / size)[:, None],
                    lambda psi, x: (fun.dW(psi, x) / size)[:, None])
     k = _harmonics(blade, steady, harmonics)

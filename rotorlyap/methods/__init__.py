@@ -2,6 +2,8 @@
 
 * :mod:`~rotorlyap.methods.lyapunov`: the paper's six-step algorithm of technical stability,
   :func:`~rotorlyap.methods.lyapunov.technical_stability`;
+* :mod:`~rotorlyap.methods.certificate_check`: a sound-rule certificate's claims (the level
+  facts and condition (h)) checked again, by the engine's own final check;
 * :mod:`~rotorlyap.methods.sampling`: points on scaled spheres, batched sup/inf searches;
 * :mod:`~rotorlyap.methods.simulation`: many motions integrated at once;
 * :mod:`~rotorlyap.methods.floquet`: Floquet multipliers of linear periodic systems;

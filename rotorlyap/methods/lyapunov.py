@@ -935,6 +935,105 @@ def _like(model, fun):
     return PsiFree(fun, model.counter) if _is_psi_free(model) else fun
 
 
+class _Level:
+    """The searches of ``W`` that the sound rule needs (:func:`_sound`,
+    :func:`rotorlyap.methods.certificate_check.check_claims`):
+    its infimum on a sphere over the period (the level), the size of ``|W|`` on a sphere (the
+    margin's scale) and, with the shell, the largest ball inside a level set. Closed forms for a
+    quadratic ``W`` (``w_matrix``), else the engine's sphere searches."""
+
+    def __init__(self, sys, w_matrix, psi, period, scales, dirs, common, *, free, shell, n_radii, n_bisect):
+        self.sys, self.w_matrix, self.psi, self.period, self.scales = sys, w_matrix, psi, period, scales
+        self.dirs, self.common, self.free, self.shell = dirs, common, free, shell
+        self.n_radii, self.n_bisect = n_radii, n_bisect
+        if w_matrix is not None:  # W = r^2 W(unit): its extrema on every sphere from two numbers
+            self.unit_min = _min_over_period(lambda p: _extreme_eigenvalues(w_matrix, p)[0], period)
+            self.unit_size = float(np.max(np.abs(_extreme_eigenvalues(w_matrix, psi))))
+        # the searches of W itself (no closed form): with the shell, whose functions have several
+        # local extrema of W on a sphere, many more of the best samples are refined, and longer
+        self.w_common = dict(common, n_refine=max(64, common["n_refine"]), n_iter=max(200, common["n_iter"])) \
+            if shell else common
+        self.inner_radii = {}  # shell: (r, alpha) -> the largest ball in {W < alpha} over the period
+
+    def sphere_min(self, r: float) -> float:
+        """The smallest ``W`` found on the sphere ``||x|| = r`` over the period (closed form for a
+        quadratic ``W``)."""
+        sys, psi, scales, dirs, free = self.sys, self.psi, self.scales, self.dirs, self.free
+        if self.w_matrix is not None:
+            return r * r * self.unit_min
+        if not self.shell:
+            return float(sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False,
+                                         free_psi=free, **self.w_common).value[0])
+        # the best 32 refined minima polished (the direction and the azimuth free)
+        ext = sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False, free_psi=free,
+                              keep=32, **self.w_common)
+        on_sphere = _like(sys.w, lambda p, y: -sys.w(p, (r * y / np.linalg.norm(y, axis=1, keepdims=True)) * scales))
+        start = Extremum(-ext.value, ext.psi, ext.x / scales / r)
+        value, _, _ = polish(on_sphere, start, free_psi=free)
+        return float(min(ext.value.min(), -value.max()))
+
+    def alpha(self, r: float) -> float:
+        """The level of the bound ``r``: :meth:`sphere_min`, with the shell
+        :data:`SHELL_LEVEL_MARGIN` below it (a search that misses the true minimum of a ``W``
+        without closed form by a little must not put the level above it)."""
+        found = self.sphere_min(r)
+        return found * (1.0 - SHELL_LEVEL_MARGIN) if self.shell and self.w_matrix is None else found
+
+    def size(self, r: float) -> float:
+        """The largest ``|W|`` found on the sphere ``||x|| = r`` (the margin's scale)."""
+        if self.w_matrix is not None:
+            return r * r * self.unit_size
+        sys = self.sys
+        return float(sphere_extremum(_like(sys.w, lambda p, x: np.abs(sys.w(p, x))), self.psi, r, self.scales,
+                                     self.dirs, per_psi=False, n_refine=1, n_iter=0, period=self.period).value[0])
+
+    def inner(self, r: float, alpha: float) -> float | None:
+        """With the shell: the largest ball in ``{W < alpha}`` at every azimuth (None without)."""
+        if not self.shell:
+            return None
+        key = (r, alpha)
+        if key not in self.inner_radii:
+            self.inner_radii[key] = _inner_radius(self.sys, self.psi, r, alpha, self.scales, self.dirs,
+                                                  self.w_common, self.n_radii, self.n_bisect, self.free)
+        return self.inner_radii[key]
+
+
+def _band_searches(band, need: float, dirs, dirs_2, thorough: bool) -> list:
+    """The searches of (h) on one band, in the order :func:`_band_verdict` runs them: over the
+    period with the azimuth free, then the map at the grid azimuths with the azimuth fixed (two
+    searches started differently: the one can find what the other misses); ``thorough`` (the
+    final check of the certified bound): also the band searches started from the best samples of
+    the whole band, and from a second set of directions ``dirs_2``. ``band(stop, per_psi,
+    starts, directions, n_lbfgs)`` is :func:`band_max_dw` on the band."""
+    searches = [lambda: band(stop=need).value[0],
+                lambda: band(stop=None, per_psi=True).value.max()]
+    if thorough:
+        searches += [lambda starts=starts, d=d: band(stop=need, starts=starts, directions=d,
+                                                     n_lbfgs=256).value[0]
+                     for starts, d in (("band", dirs), ("levels", dirs_2), ("band", dirs_2))]
+    return searches
+
+
+def _band_verdict(searches, need: float, first: int = 0) -> tuple[bool, float, int]:
+    """``(holds, worst, k)``: the searches run (search ``first`` first) until one finds
+    ``W' > need``; ``worst`` the largest value found (a NaN is kept, and fails), ``k`` the search
+    that failed (``first`` if none did). The verdict, and where it holds the worst ``W'`` (the
+    largest of every search's), do not depend on the order."""
+    worst = -np.inf
+    for k in [first] + [k for k in range(len(searches)) if k != first]:
+        value = float(searches[k]())
+        worst = value if not value <= worst else worst
+        if not worst <= need:
+            return False, worst, k
+    return True, worst, first
+
+
+def _second_directions(dirs: np.ndarray, n: int) -> np.ndarray:
+    """The final check's second set of directions: another scrambling, as many points as the
+    quasi-random part of ``dirs``."""
+    return unit_sphere_points(n, max(dirs.shape[0] - 2 * n * n, 16), 1)
+
+
 def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_shells, n_bisect,
            rtol, margin, autonomous=False, shell=False, psi_free=False) -> TechnicalStabilityResult:
     """:func:`technical_stability` with ``rule="sound"``."""
@@ -949,47 +1048,9 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
         v = np.asarray(v)
         return np.repeat(v[:1], n_psi, axis=0) if autonomous else v
 
-    if w_matrix is not None:  # W = r^2 W(unit): its extrema on every sphere from two numbers
-        unit_min = _min_over_period(lambda p: _extreme_eigenvalues(w_matrix, p)[0], period)
-        unit_size = float(np.max(np.abs(_extreme_eigenvalues(w_matrix, psi))))
-
-    # the searches of W itself (no closed form): with the shell, whose functions have several
-    # local extrema of W on a sphere, many more of the best samples are refined, and longer
-    w_common = dict(common, n_refine=max(64, common["n_refine"]), n_iter=max(200, common["n_iter"])) \
-        if shell else common
-
-    def alpha_of(r: float) -> float:
-        if w_matrix is not None:
-            return r * r * unit_min
-        if not shell:
-            return float(sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False,
-                                         free_psi=free, **w_common).value[0])
-        # the best 32 refined minima polished (the direction and the azimuth free)
-        ext = sphere_extremum(sys.w, psi, r, scales, dirs, kind="min", per_psi=False, free_psi=free,
-                              keep=32, **w_common)
-        on_sphere = _like(sys.w, lambda p, y: -sys.w(p, (r * y / np.linalg.norm(y, axis=1, keepdims=True)) * scales))
-        start = Extremum(-ext.value, ext.psi, ext.x / scales / r)
-        value, _, _ = polish(on_sphere, start, free_psi=free)
-        # the level 0.1 % below the smallest W found: a search that misses the true minimum of a
-        # W without closed form by a little must not put the level above it
-        return float(min(ext.value.min(), -value.max())) * (1.0 - SHELL_LEVEL_MARGIN)
-
-    def w_size(r: float) -> float:
-        if w_matrix is not None:
-            return r * r * unit_size
-        return float(sphere_extremum(_like(sys.w, lambda p, x: np.abs(sys.w(p, x))), psi, r, scales, dirs,
-                                     per_psi=False, n_refine=1, n_iter=0, period=period).value[0])
-
-    inner_radii = {}  # shell: (r, alpha) -> the largest ball in {W < alpha} over the period
-
-    def inner_of(r: float, alpha: float) -> float | None:
-        if not shell:
-            return None
-        key = (r, alpha)
-        if key not in inner_radii:
-            inner_radii[key] = _inner_radius(sys, psi, r, alpha, scales, dirs, w_common, n_radii,
-                                             n_bisect, free)
-        return inner_radii[key]
+    levels = _Level(sys, w_matrix, psi, period, scales, dirs, common, free=free, shell=shell,
+                    n_radii=n_radii, n_bisect=n_bisect)
+    alpha_of, w_size, inner_of, w_common = levels.alpha, levels.size, levels.inner, levels.w_common
 
     def band(r: float, alpha: float, stop: float | None, per_psi: bool = False, starts: str = "levels",
              directions=None, n_lbfgs: int = 64):
@@ -1001,39 +1062,24 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
                            n_iter=common["n_iter"], starts=starts, n_lbfgs=n_lbfgs,
                            psi_free=psi_free)
 
-    # a second set of directions for the final check: another scrambling, as many points
-    dirs_2 = unit_sphere_points(n, max(dirs.shape[0] - 2 * n * n, 16), 1)
+    dirs_2 = _second_directions(dirs, n)
     failed_first = [0]  # the thorough check's search that failed last (passes)
 
     def passes(r: float, thorough: bool = False):
-        """(h) on the band of radius r: a search over the period with the azimuth free, then,
-        if it found nothing, the map at the grid azimuths with the azimuth fixed (two searches
-        started differently: the one can find what the other misses). ``thorough``: also the
-        band searches started from the best samples of the whole band, and from a second set
-        of directions (the final check of the certified bound)."""
+        """(h) on the band of radius r (:func:`_band_searches`; ``thorough``: the final check of
+        the certified bound, which :func:`rotorlyap.methods.certificate_check.check_claims` runs
+        again on a stored certificate)."""
         report(f"sound rule: {'final check of ' if thorough else ''}the band at bound {r:.3g}")
         alpha = alpha_of(r)
         need = -margin * w_size(r)
         if not alpha > 0:
             return False, alpha, np.inf, need
-        searches = [lambda: band(r, alpha, stop=need).value[0],
-                    lambda: band(r, alpha, stop=None, per_psi=True).value.max()]
-        if thorough:
-            searches += [lambda starts=starts, d=d: band(r, alpha, stop=need, starts=starts, directions=d,
-                                                         n_lbfgs=256).value[0]
-                         for starts, d in (("band", dirs), ("levels", dirs_2), ("band", dirs_2))]
-        # the thorough check runs first the search that failed its last radius: the verdict, and
-        # where it passes the worst W' (the largest of every search's), do not depend on the order
-        first = failed_first[0] if thorough else 0
-        worst = -np.inf
-        for k in [first] + [k for k in range(len(searches)) if k != first]:
-            value = float(searches[k]())
-            worst = value if not value <= worst else worst  # a NaN is kept, and fails
-            if not worst <= need:
-                if thorough:
-                    failed_first[0] = k
-                break
-        return bool(worst <= need), alpha, worst, need
+        searches = _band_searches(lambda **kw: band(r, alpha, **kw), need, dirs, dirs_2, thorough)
+        # the thorough check runs first the search that failed its last radius
+        ok, worst, k = _band_verdict(searches, need, failed_first[0] if thorough else 0)
+        if thorough and not ok:
+            failed_first[0] = k
+        return ok, alpha, worst, need
 
     # W' on the sphere itself (a part of the band): the paper's step 3 bounds A from above
     # the margin relative to the size of W on each sphere, as on the band
