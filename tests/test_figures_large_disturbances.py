@@ -124,3 +124,22 @@ def test_anatomy_measures_the_energy_share_and_the_sign_of_w_dot_beyond_the_boun
     k = chapter.ANATOMY_RADII.index(1.25)  # radius 1.125
     assert an.max_dw[k] > 0 and abs(an.direction[k][0]) > 0.9
     assert an.energy_dw[k] > 0  # |y|^2 grows there too (the "energy" term is the whole |y|^2)
+
+
+@pytest.mark.slow
+def test_a_case_with_a_certificate_file_verifies_it_and_keeps_it_beside_the_quadratic_function(tmp_path):
+    """A case that names a certificate file reads and verifies it (its verdict printed in the
+    summary), lists it beside the quadratic function it computes, and takes it as the chapter's
+    certificate where its start region is larger; a file of another case is refused."""
+    params = chapter.CASES[0].params()
+    certify(params, 0.0, condition="none", function="quadratic", A=0.5).save(tmp_path / "small.json")
+    case = dataclasses.replace(chapter.CASES[0], function="quadratic", file="small.json")
+    kind, _, folder = "certificate", case, tmp_path
+    out = chapter._compute((kind, case, folder))
+    chosen, candidates, verification = out[3], out[4], out[8]
+    assert [c.function for c in candidates] == ["quadratic", "quadratic"]
+    assert candidates[1].certified and candidates[1].bound == pytest.approx(0.5)
+    assert verification.startswith("VERIFIED") and chosen == "quadratic"
+    other = dataclasses.replace(case, mu=0.1)
+    with pytest.raises(ValueError, match="a certificate of another case"):
+        chapter._compute((kind, other, folder))

@@ -18,15 +18,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 
+from ..analysis.certificate_file import read_certificate, verify
 from ..analysis.certify import Candidate, certify
 from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
 from ..analysis.region import SLICES, StableRegion, stable_region
 from ..analysis.sweep import process_map
 from ..conventions import HINGES, STATE_NAMES
 from ..methods.sampling import unit_sphere_points
+from ..methods.start_set import start_set
 from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
@@ -53,6 +56,12 @@ class Case:
         The flight condition of :func:`rotorlyap.certify` (``"none"``: the paper's controls).
     function : str
         The ``function`` argument of :func:`rotorlyap.certify`.
+    file : str or None
+        A certificate file (:func:`rotorlyap.verify`), relative to the folder of certificates
+        :func:`large_disturbances` is given: the case's designed certificate is read and verified
+        from it instead of designed again (a design that takes minutes, or whose last bits depend
+        on the machine, made once by ``tools/make_certificates.py``); the quadratic function
+        beside it is computed (``function`` is then ``"quadratic"``).
     """
 
     key: str
@@ -61,6 +70,7 @@ class Case:
     mu: float
     condition: str
     function: str = "auto"
+    file: str | None = None
 
     def params(self) -> BladeParameters:
         """The blade of the case."""
@@ -78,14 +88,17 @@ CASES: tuple[Case, ...] = (
     # attacked in the test run (tests/test_falsifier_designed_backward.py), the chapter shows the
     # quadratic function's
     Case("backward", "backward C.G., hover", ("table_i", "backward"), 0.0, "none", "quadratic"),
-    # so is the trimmed helicopter's at mu = 0.1: its design met the start radius 2.7 in the
-    # ordinary environment and 1.6 in the perturbed one of .ci/run, and at 1.6 the two designs
-    # differ in the second digit (2026-12-04, after the block kernels changed W' in its last
-    # bits); `certify(BladeParameters.flight_case("forward"), 0.1)` computes it and
-    # falsify_flight(0.1) attacks it (README, "The falsifier")
-    Case("mu01", "trimmed, mu = 0.1", ("flight_case", "forward"), 0.1, "propulsive", "quadratic"),
-    # and at mu = 0.2 the augmented energy's design would take about two minutes of one core
-    Case("mu02", "trimmed, mu = 0.2", ("flight_case", "forward"), 0.2, "propulsive", "quadratic"),
+    # so is the trimmed helicopter's in forward flight (at mu = 0.1 its design met the start radius
+    # 2.7 in the ordinary environment and 1.6 in the perturbed one of .ci/run), and it takes minutes:
+    # the default certify's certificate is made once by tools/make_certificates.py, committed as a
+    # file, and verified here from nothing (rotorlyap.verify); the falsifier attacks each file in
+    # the test run (tests/test_falsifier_files.py)
+    Case("mu01", "trimmed, mu = 0.1", ("flight_case", "forward"), 0.1, "propulsive", "quadratic",
+         "forward_mu010.json"),
+    Case("mu02", "trimmed, mu = 0.2", ("flight_case", "forward"), 0.2, "propulsive", "quadratic",
+         "forward_mu020.json"),
+    Case("mu025", "trimmed, mu = 0.25", ("flight_case", "forward"), 0.25, "propulsive", "quadratic",
+         "forward_mu025.json"),
 )
 """The chapter's cases, in the order of its tables."""
 
@@ -115,6 +128,9 @@ class CaseResult:
     proof : ProofLimit or None
         The proof of the designed function and what limits it (:func:`proof_limit`; None where
         the certificate's function is not a quadratic form in hover).
+    verification : str
+        For a case with a certificate file: the summary of its verification
+        (:meth:`rotorlyap.analysis.certificate_file.Verification.summary`); empty otherwise.
     set_slices : dict
         The default certificate's start set in the planes of :data:`rotorlyap.analysis.region.SLICES`
         at the azimuth 0 (:func:`set_slice`): name -> ``(axis, inside)``, the grid of both
@@ -132,6 +148,7 @@ class CaseResult:
     anatomy: Anatomy | None = None
     proof: ProofLimit | None = None
     set_slices: dict = field(default_factory=dict)
+    verification: str = ""
 
     def candidate(self, function: str) -> Candidate | None:
         """The candidate of ``function`` (None if not tried)."""
@@ -310,20 +327,54 @@ def set_slice(fun, level: float, A: float, scales, i: int, j: int, *, psi: float
     return axis, inside.reshape(n, n)
 
 
-def _compute(task: tuple[str, Case]):
-    """One task of a worker process: ``("certificate", case)`` or ``("region", case)``."""
-    kind, case = task
+def _compute(task: tuple[str, Case, Path | None]):
+    """One task of a worker process: ``("certificate", case, folder)`` or ``("region", case, folder)``."""
+    kind, case, folder = task
     if kind == "region":
         return stable_region(case.params(), case.mu, condition=case.condition)
     cert = certify(case.params(), case.mu, condition=case.condition, function=case.function)
-    designed = cert.function == "energy" and cert.certified
-    parts = anatomy(cert.lyapunov, cert.bound, cert.start_region) if designed else None
-    proof = (proof_limit(cert.lyapunov)
-             if designed and cert.lyapunov.autonomous and _is_quadratic_form(cert.lyapunov) else None)
-    slices = ({name: set_slice(cert.lyapunov, cert.result.level, cert.bound, cert.scales, i, j)
-               for name, (i, j) in SLICES.items()} if cert.certified else {})
-    return (cert.trim.params.rotor_speed, np.asarray(cert.scales, dtype=float), cert.growth_rate, cert.function,
-            tuple(cert.candidates), parts, proof, slices)
+    candidates = tuple(cert.candidates)
+    fun, level, bound, lam0, chosen, certified = (cert.lyapunov, cert.result.level if cert.certified else math.nan,
+                                                  cert.bound, cert.start_region, cert.function, cert.certified)
+    verification = ""
+    if case.file is not None:
+        stored, checked = _from_file(Path(folder) / case.file, case)
+        verification = checked.summary()
+        lam_file = float(stored.lambda0.min()) if checked.holds else 0.0
+        reach = (_start_set_of(stored.function, stored.level, stored.A, stored.scales, stored.period)
+                 if checked.holds else None)
+        candidates += (Candidate(stored.family, checked.holds, stored.A if checked.holds else 0.0, lam_file,
+                                 checked.summary().splitlines()[0],
+                                 start_set=() if reach is None else tuple(float(v) for v in reach.axis_reach)),)
+        if checked.holds and lam_file > lam0:
+            fun, level, bound, lam0, chosen, certified = (stored.function, stored.level, stored.A, lam_file,
+                                                          stored.family, True)
+    designed = chosen == "energy" and certified
+    parts = anatomy(fun, bound, lam0) if designed else None
+    proof = (proof_limit(fun) if designed and fun.autonomous and _is_quadratic_form(fun) else None)
+    slices = ({name: set_slice(fun, level, bound, cert.scales, i, j) for name, (i, j) in SLICES.items()}
+              if certified else {})
+    return (cert.trim.params.rotor_speed, np.asarray(cert.scales, dtype=float), cert.growth_rate, chosen,
+            candidates, parts, proof, slices, verification)
+
+
+def _from_file(path: Path, case: Case):
+    """The case's certificate file read and verified: ``(StoredCertificate, Verification)``; refused
+    if the file is about another blade or flight than the case (a file is input: the chapter says
+    what it verified)."""
+    stored = read_certificate(path)
+    if stored.params.cg_position != case.params().cg_position or stored.mu != case.mu \
+            or stored.condition != case.condition:
+        raise ValueError(f"{path}: a certificate of another case (mu = {stored.mu:g}, {stored.condition}, "
+                         f"C.G. at {stored.params.cg_position:g} c) than {case.label}")
+    return stored, verify(path)
+
+
+def _start_set_of(fun, level: float, A: float, scales, period: float):
+    """The start set of a function rebuilt from a file, as :func:`rotorlyap.certify` measures it."""
+    quadratic = not hasattr(fun, "autonomous")
+    autonomous = fun.constant if quadratic else fun.autonomous
+    return start_set(fun.W, level, A, scales, period=period, autonomous=autonomous, quadratic=quadratic)
 
 
 _HINGE_WORDS = tuple(f"{h} angle" for h in HINGES) + tuple(f"{h} rate" for h in HINGES)
@@ -381,6 +432,9 @@ class LargeDisturbances:
         for r in self.results:
             out.append(f"{r.case.label}: certified by the {_NAMES[r.chosen]} "
                        f"(growth {r.growth_rate:.3f} per rev)")
+            if r.verification:
+                out.append(f"  certificate file {r.case.file}, verified from nothing:")
+                out += ["    " + line for line in r.verification.splitlines()]
             for c in r.candidates:
                 reach, whole = r.reach(c.function), r.set_reach(c.function)
                 out.append(f"  {c.function}: certified={c.certified}, A = {_sig(c.bound):g}, "
@@ -424,6 +478,8 @@ class LargeDisturbances:
             q = r.candidate("quadratic")
             e = r.candidate("energy")
             f[f"ch11_{k}_chosen"] = _NAMES[r.chosen]
+            if r.verification:
+                f[f"ch11_{k}_verified"] = "verified" if r.verification.startswith("VERIFIED") else "refused"
             f[f"ch11_{k}_sim_flap"] = _sig(r.simulated[0])
             f[f"ch11_{k}_q_flap"] = _sig(r.per_component(q.start_region)[0])
             f[f"ch11_{k}_q_reach"] = _sig(100 * np.nanmin(r.reach("quadratic")))
@@ -492,8 +548,11 @@ class LargeDisturbances:
         return rows
 
 
-def large_disturbances(cases=CASES, *, workers: int | None = None) -> LargeDisturbances:
-    """Certify each case and measure its yardstick, in ``workers`` processes (default: every core).
+def large_disturbances(cases=CASES, *, workers: int | None = None,
+                       certificates: str | Path = "certificates") -> LargeDisturbances:
+    """Certify each case and measure its yardstick, in ``workers`` processes (default: every core);
+    a case with a certificate file reads and verifies it from the folder ``certificates`` (the
+    book's ``certificates/``, relative to the working directory, or any folder given).
 
     The tasks go to the processes longest first (the certificates with a designed function in
     forward flight, then in hover, then the yardsticks and the quadratic certificates).
@@ -501,20 +560,23 @@ def large_disturbances(cases=CASES, *, workers: int | None = None) -> LargeDistu
     cases = tuple(cases)
 
     def cost(task):
-        kind, case = task
+        kind, case, _ = task
         if kind == "region":
             return 1
+        if case.file is not None:  # the quadratic function, then the file's verification
+            return 3
         return 4 if case.function != "quadratic" and case.mu > 0 else (3 if case.function != "quadratic" else 2)
 
-    tasks = [(kind, c) for c in cases for kind in ("certificate", "region")]
+    folder = Path(certificates)
+    tasks = [(kind, c, folder) for c in cases for kind in ("certificate", "region")]
     order = sorted(range(len(tasks)), key=lambda i: -cost(tasks[i]))
     done = process_map(_compute, [tasks[i] for i in order], workers)
-    out = {tasks[i]: v for i, v in zip(order, done)}
+    out = {tasks[i][:2]: v for i, v in zip(order, done)}
     results = []
     for c in cases:
-        omega, scales, growth, chosen, candidates, parts, proof, slices = out[("certificate", c)]
+        omega, scales, growth, chosen, candidates, parts, proof, slices, checked = out[("certificate", c)]
         results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts, proof,
-                                  slices))
+                                  slices, checked))
     return LargeDisturbances(tuple(results))
 
 

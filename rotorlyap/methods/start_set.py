@@ -18,7 +18,9 @@ against what the blade survives.
 coordinate axes: one hinge angle or one rate disturbed alone): at each azimuth, the first
 radius where ``W`` reaches ``c`` (closed form for a quadratic ``W``, else a scan of the ray and
 a bracketing search, the side where ``W < c`` kept), capped at ``A``. The smallest over the
-azimuths is what a start at an unknown azimuth may use. For a ``W`` that is not a quadratic form
+azimuths is what a start at an unknown azimuth may use: the grid's smallest, then refined by a
+bounded scalar search of the azimuth about the three smallest grid values of each direction (a
+start between two grid azimuths may reach less than at either). For a ``W`` that is not a quadratic form
 the reach rests on the scan (64 radii per ray, then the bracket narrowed to ``1e-13 A``), as the
 rest of the certificate rests on searches: a numerical certificate.
 """
@@ -69,6 +71,9 @@ class StartSet:
     reach : numpy.ndarray
         Radius (scaled norm) up to which the ray ``r u`` stays in the set at each azimuth, shape
         ``(m, k)``: ``W < c`` on the whole segment before it, and at most ``A``.
+    least : numpy.ndarray
+        Reach along each direction at the worst start azimuth of the whole period, scaled norm,
+        shape ``(k,)``: the grid's smallest, refined between the grid's azimuths (module docstring).
     """
 
     level: float
@@ -77,17 +82,13 @@ class StartSet:
     psi: np.ndarray
     directions: np.ndarray
     reach: np.ndarray
+    least: np.ndarray
 
     def __post_init__(self) -> None:
-        for name in ("scales", "psi", "directions", "reach"):
+        for name in ("scales", "psi", "directions", "reach", "least"):
             arr = np.array(getattr(self, name), dtype=float, copy=True)
             arr.setflags(write=False)
             object.__setattr__(self, name, arr)
-
-    @property
-    def least(self) -> np.ndarray:
-        """Reach along each direction at the worst start azimuth, scaled norm, shape ``(k,)``."""
-        return self.reach.min(axis=0)
 
     @property
     def axis_reach(self) -> np.ndarray:
@@ -167,7 +168,22 @@ def start_set(W: Function, level: float, A: float, scales, *, psi=None, period: 
         if grid.size == 0 or not np.all(np.isfinite(grid)):
             raise ValueError("psi must hold at least one finite azimuth")
     m, k = grid.size, u.shape[0]
+    n_scan = _positive_int("n_scan", n_scan)
     sys = _Checked(None, W, None, n, 0.0)
-    r = _ray_level(sys, np.repeat(grid, k), np.tile(u, (m, 1)), a, level, A, True if quadratic else None,
-                   n_scan=_positive_int("n_scan", n_scan), below=True)
-    return StartSet(level=level, A=A, scales=a, psi=grid, directions=u, reach=r.reshape(m, k))
+
+    def reach_at(psi, dirs):
+        return _ray_level(sys, psi, dirs, a, level, A, True if quadratic else None, n_scan=n_scan, below=True)
+
+    r = reach_at(np.repeat(grid, k), np.tile(u, (m, 1))).reshape(m, k)
+    least = r.min(axis=0)
+    if m > 1:  # between the grid's azimuths: a bounded search about the three smallest of each ray
+        from scipy.optimize import minimize_scalar
+
+        h = period / m
+        for j in range(k):
+            for i in np.argsort(r[:, j])[:3]:
+                found = minimize_scalar(lambda p: float(reach_at(np.array([p]), u[j:j + 1])[0]),
+                                        bounds=(grid[i] - h, grid[i] + h), method="bounded",
+                                        options={"xatol": 1e-9 * period})
+                least[j] = min(least[j], float(found.fun))
+    return StartSet(level=level, A=A, scales=a, psi=grid, directions=u, reach=r, least=least)

@@ -1,0 +1,28 @@
+"""The falsifier on the certificate files the book ships (``book/certificates/``, made by
+``tools/make_certificates.py``, verified by chapter 11): each file first verifies from nothing,
+then survives the attack of :func:`falsifier.falsify_file` (the theorem's three facts on the
+band itself with :data:`EVALUATIONS` evaluations on ``W`` and ten times as many on ``W'``, the
+start set's reported reach, the worst motions from 0.97 of the start set's boundary at four start
+azimuths for 20 revolutions), on whatever machine runs the tests."""
+
+from pathlib import Path
+
+import pytest
+
+from falsifier import falsify_file
+
+FOLDER = Path(__file__).resolve().parents[1] / "book" / "certificates"
+
+#: Evaluations of each search on ``W`` (the designed hover certificates' budget).
+EVALUATIONS = 20_000
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", sorted(p.name for p in FOLDER.glob("*.json")))
+def test_each_certificate_file_of_the_book_survives_the_falsifier(name):
+    falsify_file(FOLDER / name, evaluations=EVALUATIONS)
+
+
+def test_the_book_ships_its_forward_flight_certificate_files():
+    assert {p.name for p in FOLDER.glob("*.json")} >= {"forward_mu010.json", "forward_mu020.json",
+                                                       "forward_mu025.json"}
