@@ -241,3 +241,14 @@ def test_blade_jacobian_enclosure_is_close_to_the_variation(hover, wet):
     J0 = model.jacobian(np.zeros(1), steady.state[None])[0]
     variation = np.max(np.abs(J - J0), axis=0) * scale
     assert radius.max() / variation.max() < 1.2
+
+
+def test_enclosure_width_measures_taylor_models():
+    """``enclosure_width(arithmetic="taylor")``: the issue's target ratio <= 3 on |y_i| <= 0.1 (order 2)."""
+    from rotorlyap.analysis.proof import enclosure_width
+    from rotorlyap.model.blade import Blade
+    from rotorlyap.model.parameters import BladeParameters
+
+    w = enclosure_width(Blade(BladeParameters.table_i("forward"), 0.0), bound=0.1, samples=32,
+                        arithmetic="taylor", order=2)
+    assert w.contained and w.ratio < 1.2

@@ -1,0 +1,95 @@
+"""Ball arithmetic against Taylor models: how wide the blade's enclosures are (issue 41).
+
+Run: ``python benchmarks/bench_taylor.py``.
+
+For the Table I forward C.G. blade in hover (``Blade(BladeParameters.table_i("forward"), 0)``
+about its hover equilibrium) and the boxes ``|y_i| <= b`` of the scaled state ``y = x / a``
+(``a`` :data:`rotorlyap.conventions.DEFAULT_SCALES`, ``b`` = 0.03, 0.1, 0.3), with and without the
+air loads, prints per arithmetic (Arb balls and float balls, :class:`BladeEnclosure`; Taylor
+models of order 1, 2, 3, :func:`taylor_evaluate`):
+
+* ``J ratio``: the widest radius of the enclosure of a Jacobian entry over the largest sampled
+  variation ``|J(x) - J(0)|`` (scaled entries ``J_ij a_j / a_i``), as
+  :func:`rotorlyap.analysis.proof.enclosure_width` measures it;
+* ``f ratio``: the same for the right-hand side itself (entries ``f_i / a_i``);
+* ``time``: the enclosure's wall time (value and Jacobian, one box; best of 3).
+
+The variation is sampled at the 64 corners and 256 random states of the box (the float model's
+``rhs`` and finite-difference ``jacobian``). Single-threaded numerics. Figures, not tests: nothing
+here fails; a line ``NOT CONTAINED`` would flag a sampled value outside an enclosure.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS"):
+    os.environ[_var] = "1"
+
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+BOXES = (0.03, 0.1, 0.3)
+ARITHMETICS = (("arb", 0), ("balls", 0), ("taylor", 1), ("taylor", 2), ("taylor", 3))
+
+
+def _enclose(model, steady, radius, arithmetic: str, order: int):
+    """(value lo, hi (6,), Jacobian lo, hi (6, 6)) over the box ``|x| <= radius``."""
+    from rotorlyap.analysis.enclosure import BladeEnclosure
+    from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
+    from rotorlyap.methods import intervals as iv
+
+    if arithmetic == "taylor":
+        ev = taylor_evaluate(BladeEnclosure(model, steady, arithmetic="balls"), np.zeros(6), radius, order)
+        return ev.value.bounds() + ev.jacobian.bounds()
+    ev = BladeEnclosure(model, steady, arithmetic=arithmetic).evaluate(1, radius=radius)
+    return (iv.lower(ev.value[0]), iv.upper(ev.value[0]), iv.lower(ev.jacobian[0]), iv.upper(ev.jacobian[0]))
+
+
+def main() -> None:
+    from rotorlyap.analysis.proof import _without_air
+    from rotorlyap.conventions import DEFAULT_SCALES
+    from rotorlyap.model.blade import Blade
+    from rotorlyap.model.parameters import BladeParameters
+    from rotorlyap.model.steady import as_steady_motion
+
+    blade = Blade(BladeParameters.table_i("forward"), 0.0)
+    steady = as_steady_motion(None, blade)
+    a = np.asarray(DEFAULT_SCALES, dtype=float)
+    scale = a[None, :] / a[:, None]
+    rng = np.random.default_rng(0)
+    corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * 6, indexing="ij")).reshape(6, -1).T
+    unit = np.vstack([corners, rng.uniform(-1.0, 1.0, (256, 6))])
+    print(f"{'air loads':9s} {'arithmetic':10s} {'order':>5s} {'box':>5s} {'J ratio':>9s} {'J radius':>9s} "
+          f"{'J var':>8s} {'f ratio':>8s} {'time':>8s}")
+    for air in (True, False):
+        model = blade if air else _without_air(blade)
+        for bound in BOXES:
+            z = steady.state + unit * bound * a
+            psi = np.zeros(len(z))
+            J = model.jacobian(psi, z)
+            J0 = model.jacobian(np.zeros(1), steady.state[None])[0]
+            f = model.rhs(psi, z)
+            f0 = model.rhs(np.zeros(1), steady.state[None])[0]
+            j_var = np.max(np.abs(J - J0), axis=0) * scale
+            f_var = np.max(np.abs(f - f0), axis=0) / a
+            for arithmetic, order in ARITHMETICS:
+                times = []
+                for _ in range(3):
+                    t = time.perf_counter()
+                    flo, fhi, jlo, jhi = _enclose(model, steady, bound * a, arithmetic, order)
+                    times.append(time.perf_counter() - t)
+                j_rad = 0.5 * (jhi - jlo) * scale
+                f_rad = 0.5 * (fhi - flo) / a
+                slack = 1e-6 * (np.abs(J) + 1.0)
+                ok = (np.all((J >= jlo - slack) & (J <= jhi + slack))
+                      and np.all((f >= flo - 1e-9) & (f <= fhi + 1e-9)))
+                print(f"{'yes' if air else 'no':9s} {arithmetic:10s} {order if order else '-':>5} {bound:5.2f} "
+                      f"{j_rad.max() / j_var.max():9.3f} {j_rad.max():9.3g} {j_var.max():8.3g} "
+                      f"{f_rad.max() / f_var.max():8.3f} {min(times):7.3f}s" + ("" if ok else "  NOT CONTAINED"),
+                      flush=True)
+
+
+if __name__ == "__main__":
+    main()
