@@ -14,6 +14,11 @@ models of order 1, 2, 3, :func:`taylor_evaluate`):
 * ``f ratio``: the same for the right-hand side itself (entries ``f_i / a_i``);
 * ``time``: the enclosure's wall time (value and Jacobian, one box; best of 3).
 
+``centred`` is the mean-value (centred) form in float balls, the form of the prover's averaged
+Jacobian (:class:`rotorlyap.analysis.proof.BladeProofSystem`): ``J(0) + H(box) [-r, r]`` with the
+Hessians ``H`` enclosed over the box and the slopes of the piecewise-linear pieces frozen at
+their hulls over it, and ``f(0) + J(box) [-r, r]`` for the right-hand side.
+
 The variation is sampled at the 64 corners and 256 random states of the box (the float model's
 ``rhs`` and finite-difference ``jacobian``). Single-threaded numerics. Figures, not tests: nothing
 here fails; a line ``NOT CONTAINED`` would flag a sampled value outside an enclosure.
@@ -31,7 +36,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 
 BOXES = (0.03, 0.1, 0.3)
-ARITHMETICS = (("arb", 0), ("balls", 0), ("taylor", 1), ("taylor", 2), ("taylor", 3))
+ARITHMETICS = (("arb", 0), ("balls", 0), ("centred", 0), ("taylor", 1), ("taylor", 2), ("taylor", 3))
 
 
 def _enclose(model, steady, radius, arithmetic: str, order: int):
@@ -40,6 +45,16 @@ def _enclose(model, steady, radius, arithmetic: str, order: int):
     from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
     from rotorlyap.methods import intervals as iv
 
+    if arithmetic == "centred":  # mean-value forms in float balls, as the prover's averaged Jacobian
+        from rotorlyap.methods.balls import Balls
+
+        enc = BladeEnclosure(model, steady, arithmetic="balls")
+        tube = enc.evaluate(1, radius=radius, order=2)
+        at_centre = enc.evaluate(1, slopes=tube.slopes)
+        box = Balls(np.zeros(6), radius)
+        jac = at_centre.jacobian[0] + (tube.hessian[0] * box[None, None, :]).sum(axis=-1)
+        value = at_centre.value[0] + (tube.jacobian[0] * box[None, :]).sum(axis=-1)
+        return value.lower(), value.upper(), jac.lower(), jac.upper()
     if arithmetic == "taylor":
         ev = taylor_evaluate(BladeEnclosure(model, steady, arithmetic="balls"), np.zeros(6), radius, order)
         return ev.value.bounds() + ev.jacobian.bounds()

@@ -94,6 +94,15 @@ def test_batches_enclose_each_box_as_alone():
                         centres[b], radius[b], rng, n_points=10)
 
 
+def test_compiled_product_is_the_numpy_product():
+    """The compiled product kernel (numba) and the numpy path sum the same products in the same
+    order: equal coefficients (to a fused multiply-add's rounding)."""
+    rng = np.random.default_rng(RNG_SEED)
+    sp = tm.space(6, 3)
+    a, b = rng.normal(size=(4, 3, sp.size)), rng.normal(size=(3, sp.size))
+    np.testing.assert_allclose(tm._product(a, b, sp), tm._product_numpy(a, b, sp), rtol=1e-14, atol=1e-14)
+
+
 def test_rounding_is_enclosed_for_large_cancelling_magnitudes():
     """Coefficients of 1e8 that cancel: the exact result (Arb) stays within the remainder."""
     rng = np.random.default_rng(RNG_SEED)
@@ -241,6 +250,8 @@ def test_blade_jacobian_enclosure_is_close_to_the_variation(hover, wet):
     J0 = model.jacobian(np.zeros(1), steady.state[None])[0]
     variation = np.max(np.abs(J - J0), axis=0) * scale
     assert radius.max() / variation.max() < 1.2
+    slack = 1e-6 * (np.abs(J) + 1.0)
+    assert np.all((J >= lo - slack) & (J <= hi + slack))
 
 
 def test_enclosure_width_measures_taylor_models():
