@@ -103,6 +103,36 @@ def test_compiled_product_is_the_numpy_product():
     np.testing.assert_allclose(tm._product(a, b, sp), tm._product_numpy(a, b, sp), rtol=1e-14, atol=1e-14)
 
 
+ELEMENTARY = {
+    "reciprocal": (lambda x: 1.0 / x, lambda x: 1 / x, [(-3.0, 0.5), (1e-3, 5e-4), (1e5, 1e4), (-0.2, 0.1)]),
+    "sqrt": (tm.sqrt, lambda x: x.sqrt(), [(1e-3, 9e-4), (2.0, 1.5), (1e8, 1e7)]),
+    "atan": (tm.atan, lambda x: x.atan(), [(0.0, 1.0), (-50.0, 10.0), (1e3, 5e2), (0.5, 3.0)]),
+    "sin": (tm.sin, lambda x: x.sin(), [(0.0, 2.0), (100.0, 0.3), (1.5, 4.0), (-7.0, 0.01)]),
+    "cos": (tm.cos, lambda x: x.cos(), [(0.0, 2.0), (100.0, 0.3), (1.5, 4.0), (-7.0, 0.01)]),
+    "power 5": (lambda x: x ** 5, lambda x: x ** 5, [(0.0, 2.0), (-3.0, 0.1)]),
+}
+
+
+@pytest.mark.parametrize("name", list(ELEMENTARY))
+def test_elementary_functions_contain_the_exact_values_on_hard_boxes(name):
+    """Tiny, huge, wide and negative boxes, the box's ends included, orders 1 to 4 (Arb at 200 bits)."""
+    f, exact, boxes = ELEMENTARY[name]
+    rng = np.random.default_rng(RNG_SEED)
+    old = ctx.prec
+    ctx.prec = 200
+    try:
+        for order in (1, 2, 3, 4):
+            for c, r in boxes:
+                x, = tm.variables([c], [r], order)
+                m = f(x)
+                assert np.isfinite(m.rem)
+                for t in np.concatenate([[-1.0, 1.0], rng.uniform(-1, 1, 12)]):
+                    gap = abs(exact(arb(c) + arb(r) * arb(float(t))) - _arb_poly(m, [t]))
+                    assert gap <= arb(float(m.rem)), (order, c, r, t)
+    finally:
+        ctx.prec = old
+
+
 def test_rounding_is_enclosed_for_large_cancelling_magnitudes():
     """Coefficients of 1e8 that cancel: the exact result (Arb) stays within the remainder."""
     rng = np.random.default_rng(RNG_SEED)
@@ -110,6 +140,28 @@ def test_rounding_is_enclosed_for_large_cancelling_magnitudes():
     x, y = tm.variables(c, r, 2)
     f = (x * 3.0 + y) * (x * 3.0 - y) - x * x * 9.0 + y * y + x / 7.0
     _check_contains(f, lambda a, b: (a * 3 + b) * (a * 3 - b) - a * a * 9 + b * b + a / 7, c, r, rng)
+
+
+def test_ray_average_contains_the_average_along_the_segment():
+    """``int_0^1 f(c + s r t) ds`` (Arb's rigorous integral) lies within the averaged model's remainder."""
+    from flint import acb
+
+    rng = np.random.default_rng(RNG_SEED)
+    radius = np.array([0.1, 0.05])
+    x, y = tm.variables(CENTRE, radius, 3)
+    f = _composite(x, y, tm.sin, tm.cos, tm.atan, tm.sqrt)
+    F = f.ray_average()
+    assert F.rem >= f.rem
+    for _ in range(4):
+        t = rng.uniform(-1, 1, 2)
+
+        def g(s, _):
+            a = acb(float(CENTRE[0])) + s * acb(float(radius[0] * t[0]))
+            b = acb(float(CENTRE[1])) + s * acb(float(radius[1] * t[1]))
+            return _composite(a, b, acb.sin, acb.cos, acb.atan, acb.sqrt)
+
+        exact = acb.integral(g, 0, 1).real
+        assert abs(exact - _arb_poly(F, t)) <= arb(float(F.rem))
 
 
 @pytest.mark.parametrize("order", [2, 3, 4])

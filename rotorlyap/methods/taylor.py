@@ -256,6 +256,20 @@ class TaylorModel:
         return TaylorModel._new(self.coef.reshape(tuple(shape) + (self.space.size,)), self.rem.reshape(shape),
                                 self.space)
 
+    def ray_average(self) -> "TaylorModel":
+        """The models of ``F(t) = int_0^1 f(s t) ds``: ``f`` averaged along the segment from the
+        box's centre (``t = 0``) to ``t``.
+
+        Each coefficient is divided by its degree plus one; the remainder is kept (``s t`` lies in
+        the box, so ``|f(s t) - p(s t)| <= r`` for every ``s``), plus the divisions' rounding. For
+        the Jacobian ``J`` of ``g`` over a box centred at a point ``x0`` this encloses the averaged
+        Jacobian ``K(x) = int_0^1 J(x0 + s (x - x0)) ds`` of ``g(x) = g(x0) + K(x) (x - x0)``
+        (:mod:`rotorlyap.methods.proof`), whose linear terms are half those of ``J``.
+        """
+        c = self.coef / (self.space.degree + 1.0)
+        # each quotient within u |c_k| + eta (F1 of rotorlyap.methods.balls)
+        return TaylorModel._new(c, _up(self.rem + U * np.abs(c).sum(axis=-1)), self.space)
+
     def moveaxis(self, source: int, destination: int) -> "TaylorModel":
         """``numpy.moveaxis`` of the batch axes."""
         nd = self.ndim
