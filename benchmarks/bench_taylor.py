@@ -1,6 +1,6 @@
 """Ball arithmetic against Taylor models: how wide the blade's enclosures are (issue 41).
 
-Run: ``python benchmarks/bench_taylor.py``.
+Run: ``python benchmarks/bench_taylor.py [--proof]``.
 
 For the Table I forward C.G. blade in hover (``Blade(BladeParameters.table_i("forward"), 0)``
 about its hover equilibrium) and the boxes ``|y_i| <= b`` of the scaled state ``y = x / a``
@@ -18,6 +18,13 @@ models of order 1, 2, 3, :func:`taylor_evaluate`):
 Jacobian (:class:`rotorlyap.analysis.proof.BladeProofSystem`): ``J(0) + H(box) [-r, r]`` with the
 Hessians ``H`` enclosed over the box and the slopes of the piecewise-linear pieces frozen at
 their hulls over it, and ``f(0) + J(box) [-r, r]`` for the right-hand side.
+
+With ``--proof``, also the quadratic function's certificate (``certify(..., verify=True)``, the
+same blade) proved by :func:`rotorlyap.methods.proof.prove_quadratic` with the averaged Jacobian
+``K`` of the tube enclosed by the package's prover (float balls, the mean-value form) and, as an
+experiment outside the package, by Taylor models (the Jacobian's models averaged along the rays,
+:meth:`~rotorlyap.methods.taylor.TaylorModel.ray_average`, bounded entrywise): the proved bound
+``A`` against the numerical one.
 
 The variation is sampled at the 64 corners and 256 random states of the box (the float model's
 ``rhs`` and finite-difference ``jacobian``). Single-threaded numerics. Figures, not tests: nothing
@@ -62,7 +69,55 @@ def _enclose(model, steady, radius, arithmetic: str, order: int):
     return (iv.lower(ev.value[0]), iv.upper(ev.value[0]), iv.lower(ev.jacobian[0]), iv.upper(ev.jacobian[0]))
 
 
+def _proofs() -> None:
+    """The proved bound with the prover's balls and with Taylor-model averaged Jacobians."""
+    from rotorlyap.analysis.certify import certify
+    from rotorlyap.analysis.proof import BladeProofSystem, proof_problem
+    from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
+    from rotorlyap.methods import intervals as iv
+    from rotorlyap.methods.balls import Balls
+    from rotorlyap.methods.proof import prove_quadratic
+    from rotorlyap.model.parameters import BladeParameters
+
+    class TaylorProofSystem(BladeProofSystem):
+        """The hover system with ``K`` from Taylor models of order ``order`` (one box, the tube)."""
+
+        def __init__(self, blade, steady, order: int):
+            super().__init__(blade, steady, arithmetic="balls")
+            self.order = order
+
+        def averaged_jacobian(self, N: int, radius):
+            ev = taylor_evaluate(self.enclosure, np.zeros(6), np.asarray(radius, dtype=float), self.order)
+            K = ev.jacobian.ray_average().to_balls()
+            return Balls(np.broadcast_to(K.mid, (N, 6, 6)), np.broadcast_to(K.rad, (N, 6, 6))), {}
+
+    cert = certify(BladeParameters.table_i("forward"), 0.0, verify=True)
+    fun = cert.lyapunov
+    print(f"\nquadratic function, Table I forward C.G. hover: numerical A = {cert.bound:.4g}, "
+          f"lambda0 = {cert.start_region:.4g}")
+    system, quadratic, N = proof_problem(fun, arithmetic="balls")
+    systems = [("balls (prover)", system)] + [(f"taylor order {k}", TaylorProofSystem(fun.blade, fun.steady, k))
+                                              for k in (1, 2, 3)]
+    for label, sys_ in systems:
+        t = time.perf_counter()
+        with iv.arithmetic("balls"):
+            proof = prove_quadratic(sys_, quadratic, cert.bound, scales=fun.scales, n_intervals=N, n_bisect=10)
+        print(f"{label:15s}: proved A = {proof.A:.4g} ({proof.A / cert.bound:.2f} of the numerical), "
+              f"lambda0 = {proof.min_lambda0:.4g}, {time.perf_counter() - t:.2f} s", flush=True)
+
+
 def main() -> None:
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--proof", action="store_true", help="also the proved bounds (balls and Taylor models)")
+    args = parser.parse_args()
+    _widths()
+    if args.proof:
+        _proofs()
+
+
+def _widths() -> None:
     from rotorlyap.analysis.proof import _without_air
     from rotorlyap.conventions import DEFAULT_SCALES
     from rotorlyap.model.blade import Blade

@@ -13,10 +13,13 @@ cancel them in their coefficients.
 
 The strip loads need two adapters: the angle of attack ``atan2(u_z, -u_y)`` on the branch of
 :func:`rotorlyap.analysis.enclosure._angle_value` (chosen per box from the ranges), and the
-piecewise-linear airfoil table, enclosed as ``f(a) in f(a0) + S (a - a0)`` about the model's
-constant coefficient ``a0`` with ``S`` the hull of the slopes of the segments the range touches
-(exact, ``S`` a point, where the range lies in one segment); its derivative is ``S`` (the
-generalised derivative at a kink), as in the ball enclosure.
+piecewise-linear airfoil table (:func:`_tm_table`): the slopes of the segments the range of the
+angle touches enclosed by a line in the angle plus a bound of their deviation from it, the value
+the integral of that slope from the model's constant coefficient (exact where the range lies in
+one segment). Its derivative is that slope (at a kink: every generalised derivative), as in the
+ball enclosure, which takes the hull of the slopes instead: over a range of many segments of a
+fine table (the NACA 23012's 65 536 nodes) the hull is as wide as the airfoil's curvature
+times the range, a Jacobian remainder of first order in the box.
 
 Scope: constant steady motions (hover about the equilibrium, no cyclic pitch, uniform inflow:
 :attr:`BladeEnclosure.constant`) and incompressible sections. Not yet used by the prover.
@@ -109,18 +112,71 @@ def _tm_angle(u_y: Jet, u_z: Jet) -> Jet:
     return iv.bivariate(X, Y, value, -Y.v * inv, X.v * inv)
 
 
+def _slope_line(table, c: int, k_lo: int, k_hi: int, u0: float, du0: float):
+    """A line ``s0 + kappa (u - u0)`` through the segment slopes of coefficient ``c`` of the table
+    (per segment of the grid ``u = (alpha + pi) n / (2 pi)``) on the segments ``k_lo..k_hi``,
+    and ``e``: a float with ``|d_k - s0 - kappa (u - u0)| <= e`` for every ``u`` of those segments
+    (``d_k`` the exact node difference; ``u0`` known to ``du0``, see :func:`_tm_table`)."""
+    k = np.arange(k_lo, k_hi + 1)
+    idx = k % table.n
+    d_lo, d_hi = table.d_lo[c][idx], table.d_hi[c][idx]
+    m = k + 0.5 - u0
+    if k.size == 1:
+        s0, kappa = 0.5 * (d_lo[0] + d_hi[0]), 0.0
+    else:
+        kappa, s0 = np.polyfit(m, 0.5 * (d_lo + d_hi), 1)   # any line is valid: the error is bounded below
+    dev = iv.hull(d_lo, d_hi) - (Balls(m) * float(kappa) + float(s0))
+    # within segment k, |u - (k + 1/2)| <= 1/2, and u0 is known to du0
+    e = Balls(float(np.max(dev.magnitude()))) + Balls(abs(float(kappa))) * Balls(0.5 + du0)
+    return float(s0), float(kappa), float(e.upper())
+
+
 def _tm_table(enc: BladeEnclosure, alpha: Jet) -> tuple[Jet, Jet, Jet]:
-    """cl, cd, cm (Jets of models) of the piecewise-linear table at the angle ``alpha``:
-    ``f(a) in f(a0) + S (a - a0)``, ``S`` the slope hull over the range (module docstring)."""
+    """cl, cd, cm (Jets of models) of the piecewise-linear table at the angle ``alpha``.
+
+    With ``a0`` the model's constant coefficient, ``h = alpha - a0``, ``u`` the table's grid
+    coordinate (``du/dalpha = F``, ``F = n / (2 pi)``) and the segment slopes ``d_k`` (per unit of
+    ``u``) of the segments the range touches enclosed by a line,
+    ``|d_k - s0 - kappa (u - u0)| <= e`` (:func:`_slope_line`): the slope is
+    ``F (s0 + kappa F h) +- F e`` and the value ``f(a0) + F s0 h + F^2 kappa h^2 / 2 +- F e |h|``
+    (the integral of the slope from ``a0``). Where the range lies in one segment, ``e = 0``: the
+    table is linear there, exactly. The slope is the derivative (at a kink: every generalised
+    derivative). A range over more than half the period falls back to the hull of every slope."""
     a = alpha.v
     a0 = a.coef[..., 0]
+    sp = a.space
     with iv.arithmetic("balls"):
-        at_point = enc.table.lookup(Balls(a0))
-        over_range = enc.table.lookup(a.to_balls())
-    offset = a - a0
+        table = enc.table
+        fac = table.fac
+        at_point = table.lookup(Balls(a0))
+        u_range = (a.to_balls() + iv.pi()) * fac
+        u_point = (Balls(a0) + iv.pi()) * fac
+        k_lo = np.floor(u_range.lower())
+        k_hi = np.floor(u_range.upper())
+        wide = ~(k_hi - k_lo < table.n // 2)
+        over_range = table.lookup(a.to_balls()) if np.any(wide) else None
+    h = a - a0
+    H = h.magnitude()
     out = []
-    for (val, _), (_, slope) in zip(at_point, over_range):
-        out.append(iv.chain(alpha, offset * slope + val, slope, None))
+    for c in range(3):
+        s0 = np.zeros(a.shape)
+        kap = np.zeros(a.shape)
+        e = np.zeros(a.shape)
+        for i in np.ndindex(a.shape):
+            if wide[i]:
+                continue
+            s0[i], kap[i], e[i] = _slope_line(table, c, int(k_lo[i]), int(k_hi[i]), float(u_point.mid[i]),
+                                              float(u_point.rad[i]))
+        lin = fac * Balls(s0)                      # F s0
+        quad = fac * fac * Balls(kap)              # F^2 kappa
+        err = (fac * Balls(e)).magnitude()         # F e, rounded up
+        slope = h * quad + lin + Balls(np.zeros(a.shape), err)
+        value = h * lin + (h * h) * (quad * 0.5) + at_point[c][0] + Balls(np.zeros(a.shape), (Balls(err) * Balls(H)).upper())
+        if np.any(wide):
+            val_w, slope_w = over_range[c][1] * h + at_point[c][0], over_range[c][1]
+            value = tm.where(wide, val_w, value)
+            slope = tm.where(wide, TaylorModel.constant(slope_w, sp, a.shape), slope)
+        out.append(iv.chain(alpha, value, slope, None))
     return tuple(out)
 
 
