@@ -316,6 +316,24 @@ def _min_const(x: Jet, cap: float, tape: _Slopes) -> Jet:
     return _piecewise_linear(x, iv.minimum(x.v, cap), slope, tape)
 
 
+def _strip_wind(T: list, st: np.ndarray, k: int, az, advance=None) -> tuple:
+    """The relative wind ``(u_y, u_z)`` at the strip ``k`` and its square ``V2``: the air's
+    velocity (inflow ``az``; ``advance = (ax, ay)`` in forward flight) in the blade's axes less the
+    blade's own (its velocity ``T[10:12]`` and angular velocity ``T[12:15]`` at the strip's point)."""
+    if advance is not None:
+        ax, ay = advance
+        air_y = T[36] * ax + T[37] * ay + T[38] * az
+        air_z = T[39] * ax + T[40] * ay + T[41] * az
+    else:
+        air_y = T[38] * az
+        air_z = T[41] * az
+    vPy, vPz, wx, wy, wz = T[10], T[11], T[12], T[13], T[14]
+    rx = float(st[_RX, k])
+    u_y = air_y - (vPy + wz * rx - wx * float(st[_WZ, k]))
+    u_z = air_z - (vPz + wx * float(st[_WY, k]) - wy * rx)
+    return u_y, u_z, u_y * u_y + u_z * u_z
+
+
 def _attack_angle(u_y: Jet, u_z: Jet) -> Jet:
     """``alpha = atan2(u_z, -u_y)`` with its derivatives: ``X = -u_y``, ``Y = u_z``,
     ``alpha_X = -Y / V^2``, ``alpha_Y = X / V^2``, ``alpha_XX = -alpha_YY = 2 X Y / V^4``,
@@ -449,7 +467,6 @@ class BladeEnclosure:
         F1 = T[7] - z[4] * float(sc[_C1])
         F2 = T[8] - z[5] * float(sc[_C2])
         if sc[_ACTIVE] != 0.0:
-            vPy, vPz, wx, wy, wz = T[10], T[11], T[12], T[13], T[14]
             cpsi = iv.cos(psi)
             muVR = float(sc[_MUVR])
             if muVR != 0.0:
@@ -463,16 +480,8 @@ class BladeEnclosure:
                     az = iv.const(float(st[_IA, k]))
                 else:
                     az = cpsi * float(st[_IB, k]) + float(st[_IA, k])
-                if muVR != 0.0:
-                    air_y = T[36] * ax + T[37] * ay + T[38] * az
-                    air_z = T[39] * ax + T[40] * ay + T[41] * az
-                else:
-                    air_y = T[38] * az
-                    air_z = T[41] * az
                 rx = float(st[_RX, k])
-                u_y = air_y - (vPy + wz * rx - wx * float(st[_WZ, k]))
-                u_z = air_z - (vPz + wx * float(st[_WY, k]) - wy * rx)
-                V2 = u_y * u_y + u_z * u_z
+                u_y, u_z, V2 = _strip_wind(T, st, k, az, (ax, ay) if muVR != 0.0 else None)
                 Vm = iv.sqrt(V2)
                 alpha = _attack_angle(u_y, u_z)
                 wind = ~iv.is_finite(alpha.v)

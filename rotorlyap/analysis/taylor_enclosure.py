@@ -39,9 +39,9 @@ from ..methods.intervals import Jet
 from ..methods.taylor import TaylorMath, TaylorModel
 from ..model._generated import blade_scalar as _scalar
 from ..model.compiled import (_ACTIVE, _C0, _C1, _C2, _COMPRESSIBLE, _DN, _IA, _MN, _OMEGA, _PHI, _PITCH_DAMPED,
-                              _QN, _RX, _RY, _RZ, _TWISTED, _WY, _WZ)
+                              _QN, _RX, _RY, _RZ, _TWISTED)
 from ..model.equations import solve_sym3
-from .enclosure import BladeEnclosure
+from .enclosure import BladeEnclosure, _strip_wind
 
 __all__ = ["TaylorEvaluation", "taylor_evaluate"]
 
@@ -125,9 +125,10 @@ def _slope_line(table, c: int, k_lo: int, k_hi: int, u0: float, du0: float):
         s0, kappa = 0.5 * (d_lo[0] + d_hi[0]), 0.0
     else:
         kappa, s0 = np.polyfit(m, 0.5 * (d_lo + d_hi), 1)   # any line is valid: the error is bounded below
-    dev = iv.hull(d_lo, d_hi) - (Balls(m) * float(kappa) + float(s0))
+    offset = Balls(k + 0.5) - u0                       # k + 1/2 - u0, rounding enclosed
+    dev = iv.hull(d_lo, d_hi) - (offset * float(kappa) + float(s0))
     # within segment k, |u - (k + 1/2)| <= 1/2, and u0 is known to du0
-    e = Balls(float(np.max(dev.magnitude()))) + Balls(abs(float(kappa))) * Balls(0.5 + du0)
+    e = Balls(float(np.max(dev.magnitude()))) + Balls(abs(float(kappa))) * (Balls(0.5) + du0)
     return float(s0), float(kappa), float(e.upper())
 
 
@@ -185,17 +186,11 @@ def _air_moments(enc: BladeEnclosure, z: list, T: list):
     ``_ACTIVE`` branch of ``BladeEnclosure._accelerations``."""
     sc, st = enc.sc, enc.st
     om = float(sc[_OMEGA])
-    vPy, vPz, wx, wy, wz = T[10], T[11], T[12], T[13], T[14]
     q_rel = T[12] - T[35] * om
     sFy = sFz = Mx = My = Mz = 0.0
     for k in range(st.shape[1]):
-        az = Balls(float(st[_IA, k]))
-        air_y = T[38] * az
-        air_z = T[41] * az
         rx = float(st[_RX, k])
-        u_y = air_y - (vPy + wz * rx - wx * float(st[_WZ, k]))
-        u_z = air_z - (vPz + wx * float(st[_WY, k]) - wy * rx)
-        V2 = u_y * u_y + u_z * u_z
+        u_y, u_z, V2 = _strip_wind(T, st, k, Balls(float(st[_IA, k])))
         Vm = tm.sqrt(V2)
         alpha = _tm_angle(u_y, u_z)
         if sc[_TWISTED] != 0.0:

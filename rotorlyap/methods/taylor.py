@@ -339,18 +339,7 @@ class TaylorModel:
             if o.space is not self.space:
                 raise ValueError(f"Taylor models of different spaces: {self.space} and {o.space}")
             return o
-        if isinstance(o, Balls):
-            return o
-        if isinstance(o, (float, int, np.floating, np.integer)):
-            return float(o)
-        if isinstance(o, np.ndarray):
-            if o.dtype == object:
-                raise TypeError("Taylor models do not mix with object arrays (Arb balls): convert with "
-                                "rotorlyap.methods.balls.as_balls")
-            return o.astype(float, copy=False)
-        if isinstance(o, arb):
-            return fb.from_arb(o)
-        return NotImplemented
+        return fb._operand(o)   # balls, exact floats and float arrays, Arb scalars; else NotImplemented
 
     # ------------------------------------------------------------------ + -
     def __neg__(self) -> "TaylorModel":
