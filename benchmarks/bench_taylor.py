@@ -24,7 +24,10 @@ same blade) proved by :func:`rotorlyap.methods.proof.prove_quadratic` with the a
 ``K`` of the tube enclosed by the package's prover (float balls, the mean-value form) and, as an
 experiment outside the package, by Taylor models (the Jacobian's models averaged along the rays,
 :meth:`~rotorlyap.methods.taylor.TaylorModel.ray_average`, bounded entrywise): the proved bound
-``A`` against the numerical one.
+``A`` against the numerical one; and, a further experiment (:func:`_euclidean_bound`), the bound
+up to which the prover's condition holds when the nonlinear term is bounded over the Euclidean
+ball ``|y| <= A`` from the models' coefficient matrices, instead of over the cube ``|y_i| <= A``
+from entrywise hulls (the next step of issue 41).
 
 The variation is sampled at the 64 corners and 256 random states of the box (the float model's
 ``rhs`` and finite-difference ``jacobian``). Single-threaded numerics. Figures, not tests: nothing
@@ -104,6 +107,67 @@ def _proofs() -> None:
             proof = prove_quadratic(sys_, quadratic, cert.bound, scales=fun.scales, n_intervals=N, n_bisect=10)
         print(f"{label:15s}: proved A = {proof.A:.4g} ({proof.A / cert.bound:.2f} of the numerical), "
               f"lambda0 = {proof.min_lambda0:.4g}, {time.perf_counter() - t:.2f} s", flush=True)
+    for order in (2, 3, 4):
+        t = time.perf_counter()
+        A = _euclidean_bound(system, quadratic, fun.scales, cert.bound, order)
+        print(f"taylor order {order}, the ball |y| <= A (experiment): condition (h) proved up to A = {A:.4g} "
+              f"({A / cert.bound:.2f} of the numerical), {time.perf_counter() - t:.2f} s", flush=True)
+
+
+def _euclidean_bound(system, quadratic, scales, A_max: float, order: int, n_bisect: int = 12) -> float:
+    """The largest bound for which the certificate's condition holds with ``n`` bounded over the
+    Euclidean ball ``|y| <= A`` instead of the cube: an experiment for the next step of issue 41.
+
+    The Taylor models of the averaged Jacobian over the cube ``|y_i| <= A`` (which contains the
+    ball) give ``K(t) in sum_alpha C_alpha t^alpha + [-R, R]``, ``t = y / A``; with
+    ``N_alpha = C_alpha^T S + S C_alpha`` (scaled), for ``|t| <= 1``, by Weyl's inequality,
+    ``lambda_max(N(t)) <= lambda_max(N_0 ball with R) + sqrt(sum_i ||N_i||^2)
+    + sum_{|alpha|>=2} ||N_alpha|| sup_{|t|=1} |t^alpha|``, ``sup |t^alpha| = prod (alpha_i/|alpha|)^(alpha_i/2)``;
+    the spectral norms from rigorous eigenvalue bounds. Then the prover's test: ``n < 0`` and
+    ``n r + 2 e < 0`` (:mod:`rotorlyap.methods.proof`). Hover only (one azimuth interval).
+    """
+    from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
+    from rotorlyap.methods import intervals as iv
+    from rotorlyap.methods.balls import Balls
+    from rotorlyap.methods.proof import _Base, _quadratic_form_matrix, _scaled_matrix
+
+    a = np.asarray(scales, dtype=float)
+    with iv.arithmetic("balls"):
+        base = _Base(system, quadratic, a, 1)
+    S, dS = base.S, base.dS
+    s_min = float(np.min(base.s_lo))
+
+    def norm_upper(M: Balls) -> float:
+        lo, hi = iv.symmetric_eigenvalue_bounds(M)
+        return float(np.nextafter(max(-lo[0], hi[0]), np.inf))
+
+    def holds(A: float) -> bool:
+        K = taylor_evaluate(system.enclosure, np.zeros(6), A * a, order).jacobian.ray_average()
+        sp = K.space
+        with iv.arithmetic("balls"):
+            K0 = _scaled_matrix(Balls(K.coef[None, ..., 0], K.rem[None]), a)
+            _, n0 = iv.symmetric_eigenvalue_bounds(dS + _quadratic_form_matrix(S, K0))
+            terms = []
+            for m in range(1, sp.size):
+                Nm = _quadratic_form_matrix(S, _scaled_matrix(Balls(K.coef[None, ..., m]), a))
+                alpha = sp.exponents[m]
+                d = alpha.sum()
+                peak = float(np.prod([(ai / d) ** (ai / 2) for ai in alpha if ai])) * (1 + 1e-12)
+                terms.append((sp.degree[m], norm_upper(Nm) * peak))
+        lin = np.sqrt(sum(v * v for deg, v in terms if deg == 1)) * (1 + 1e-12)
+        higher = sum(v for deg, v in terms if deg > 1) * (1 + 1e-12)
+        n = float(np.nextafter(np.nextafter(float(n0[0]) + lin, np.inf) + higher, np.inf))
+        c = A * A * s_min * (1 - 1e-15)
+        r = np.sqrt(c / float(base.s_hi[0])) * (1 - 1e-15)
+        return n < 0 and n * r * (1 - 1e-15) + 2 * float(base.e[0]) * (1 + 1e-15) < 0
+
+    lo, hi = 0.0, A_max
+    if holds(hi):
+        return hi
+    for _ in range(n_bisect):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if holds(mid) else (lo, mid)
+    return lo
 
 
 def main() -> None:
