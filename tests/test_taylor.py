@@ -237,6 +237,10 @@ def test_bad_input_raises():
         x + y
     with pytest.raises(ValueError, match="integer powers"):
         x ** 0.5
+    with pytest.raises(ValueError, match="remainder"):
+        tm.TaylorModel(np.zeros(3), -1.0, x.space)
+    with pytest.raises(ValueError, match="coefficients"):
+        tm.TaylorModel(np.zeros(4), 0.0, x.space)
 
 
 # --------------------------------------------------------------------------------------

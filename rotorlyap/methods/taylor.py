@@ -213,8 +213,11 @@ class TaylorModel:
         c = np.asarray(coef, dtype=float)
         if c.ndim < 1 or c.shape[-1] != space.size:
             raise ValueError(f"coefficients must have shape batch + ({space.size},), got {c.shape}")
+        r = np.broadcast_to(np.asarray(rem, dtype=float), c.shape[:-1])
+        if np.any(r < 0):
+            raise ValueError("remainder radii must be >= 0 (or nan: no enclosure)")
         self.coef = c
-        self.rem = np.broadcast_to(np.asarray(rem, dtype=float), c.shape[:-1])
+        self.rem = r
         self.space = space
 
     @classmethod
@@ -479,10 +482,6 @@ class TaylorModel:
             p = p * h + cj
         return TaylorModel._new(p.coef, _up(p.rem + rem), self.space)
 
-    def _range_balls(self) -> Balls:
-        lo, hi = self.bounds()
-        return fb.from_bounds(lo, hi)
-
     def sin_cos(self) -> tuple["TaylorModel", "TaylorModel"]:
         """``(sin f, cos f)``: Taylor polynomials about ``x0`` (derivatives ``+-sin x0``,
         ``+-cos x0`` as balls) with the Lagrange remainder ``max|sin^(k+1)| |h|^(k+1) / (k+1)!``,
@@ -494,7 +493,7 @@ class TaylorModel:
         fact = [float(math.factorial(j)) for j in range(k + 2)]
         cs = [cycle_s[j % 4] / fact[j] for j in range(k + 1)]
         cc = [cycle_c[j % 4] / fact[j] for j in range(k + 1)]
-        sr, cr = self._range_balls().sin_cos()
+        sr, cr = self.to_balls().sin_cos()
         ms, mc = np.minimum(sr.magnitude(), 1.0), np.minimum(cr.magnitude(), 1.0)
         d_s = ms if (k + 1) % 2 == 0 else mc     # |sin^(k+1)| is |sin| or |cos|
         d_c = mc if (k + 1) % 2 == 0 else ms
