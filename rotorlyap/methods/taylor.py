@@ -58,7 +58,7 @@ import numpy as np
 from flint import arb
 
 from . import balls as fb
-from .balls import ETA, U, Balls
+from .balls import U, Balls
 from .intervals import Jet, chain
 
 __all__ = ["TaylorMath", "TaylorModel", "TaylorSpace", "atan", "cos", "sin", "space", "sqrt", "stack",
