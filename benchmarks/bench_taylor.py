@@ -1,6 +1,6 @@
 """Ball arithmetic against Taylor models: how wide the blade's enclosures are (issue 41).
 
-Run: ``python benchmarks/bench_taylor.py [--proof]``.
+Run: ``python benchmarks/bench_taylor.py [--proof] [--flight]``.
 
 For the Table I forward C.G. blade in hover (``Blade(BladeParameters.table_i("forward"), 0)``
 about its hover equilibrium) and the boxes ``|y_i| <= b`` of the scaled state ``y = x / a``
@@ -28,6 +28,12 @@ experiment outside the package, by Taylor models (the Jacobian's models averaged
 up to which the prover's condition holds when the nonlinear term is bounded over the Euclidean
 ball ``|y| <= A`` from the models' coefficient matrices, instead of over the cube ``|y_i| <= A``
 from entrywise hulls (the next step of issue 41).
+
+With ``--flight``, the same Jacobian measure for the trimmed helicopter at ``mu = 0.1``
+(``flight_case("forward")``, compressible sections) about its tabulated periodic motion on 256
+azimuth intervals, the azimuth a model variable (the variation: the float Jacobian at 8 random
+azimuths and states per interval against the one at the interval's midpoint on the steady
+motion).
 
 The variation is sampled at the 64 corners and 256 random states of the box (the float model's
 ``rhs`` and finite-difference ``jacobian``). Single-threaded numerics. Figures, not tests: nothing
@@ -170,15 +176,61 @@ def _euclidean_bound(system, quadratic, scales, A_max: float, order: int, n_bise
     return lo
 
 
+def _flight() -> None:
+    """The trimmed helicopter at mu = 0.1 about its tabulated motion, 256 azimuth intervals."""
+    from rotorlyap.analysis.enclosure import BladeEnclosure
+    from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
+    from rotorlyap.conventions import DEFAULT_SCALES
+    from rotorlyap.methods import intervals as iv
+    from rotorlyap.model.blade import Blade
+    from rotorlyap.model.forward_trim import forward_flight_trim
+    from rotorlyap.model.parameters import BladeParameters
+    from rotorlyap.model.steady import tabulate_motion
+
+    trim = forward_flight_trim(BladeParameters.flight_case("forward"), 0.1)
+    blade = Blade(trim.params, 0.1)
+    n = 256
+    tab = tabulate_motion(trim.motion, n=n)
+    enc = BladeEnclosure(blade, tab, arithmetic="balls")
+    a = np.asarray(DEFAULT_SCALES, dtype=float)
+    scale = a[None, :] / a[:, None]
+    rng = np.random.default_rng(0)
+    print(f"\nforward flight, flight_case('forward'), mu = 0.1, compressible, {n} azimuth intervals "
+          "(the box and the interval): ")
+    print(f"{'arithmetic':10s} {'order':>5s} {'box':>5s} {'J ratio':>9s} {'J radius':>9s} {'J var':>8s} {'time':>8s}")
+    for bound in (0.03, 0.1):
+        radius = bound * a
+        k = np.repeat(np.arange(n), 8)
+        psi = 2 * np.pi * (k + rng.uniform(0, 1, k.size)) / n
+        z = tab.xi(psi) + radius * rng.uniform(-1, 1, (k.size, 6))
+        psi_c = 2 * np.pi * (np.arange(n) + 0.5) / n
+        J0 = blade.jacobian(psi_c, tab.xi(psi_c))
+        variation = np.abs(blade.jacobian(psi, z) - J0[k]) * scale
+        for arithmetic, order in (("balls", 0), ("taylor", 1), ("taylor", 2), ("taylor", 3)):
+            t = time.perf_counter()
+            if arithmetic == "balls":
+                J = enc.evaluate(n, radius=radius).jacobian
+                lo, hi = iv.lower(J), iv.upper(J)
+            else:
+                lo, hi = taylor_evaluate(enc, np.zeros(6), radius, order, n_intervals=n).jacobian.bounds()
+            dt = time.perf_counter() - t
+            rad = 0.5 * (hi - lo) * scale
+            print(f"{arithmetic:10s} {order if order else '-':>5} {bound:5.2f} {rad.max() / variation.max():9.3f} "
+                  f"{rad.max():9.3g} {variation.max():8.3g} {dt:7.2f}s", flush=True)
+
+
 def main() -> None:
     import argparse
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--proof", action="store_true", help="also the proved bounds (balls and Taylor models)")
+    parser.add_argument("--flight", action="store_true", help="also the forward-flight case (256 intervals)")
     args = parser.parse_args()
     _widths()
     if args.proof:
         _proofs()
+    if args.flight:
+        _flight()
 
 
 def _widths() -> None:
