@@ -205,7 +205,7 @@ class TaylorModel:
     rigorous; models of different spaces raise ``ValueError``.
     """
 
-    __slots__ = ("coef", "rem", "space")
+    __slots__ = ("coef", "rem", "space", "_mag", "_dsums")   # _mag, _dsums: cached, models are not mutated
     __array_ufunc__ = None
     __array_priority__ = 2000   # above Balls: Balls op model defers to the model
 
@@ -219,11 +219,13 @@ class TaylorModel:
         self.coef = c
         self.rem = r
         self.space = space
+        self._mag = self._dsums = None
 
     @classmethod
     def _new(cls, coef, rem, sp):
         out = object.__new__(cls)
         out.coef, out.rem, out.space = coef, rem, sp
+        out._mag = out._dsums = None
         return out
 
     @classmethod
@@ -303,8 +305,10 @@ class TaylorModel:
 
     def poly_magnitude(self) -> np.ndarray:
         """A float ``>= |p(t)|`` over the box."""
-        lo, hi = self.poly_bounds()
-        return np.maximum(-lo, hi)
+        if self._mag is None:
+            lo, hi = self.poly_bounds()
+            self._mag = np.maximum(-lo, hi)
+        return self._mag
 
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """Floats ``lo <= f(t) <= hi`` for every function the models enclose (``-inf``/``inf``
@@ -400,7 +404,9 @@ class TaylorModel:
 
     def _degree_sums(self) -> np.ndarray:
         """``A_d = sum |a_i|`` over the monomials of degree ``d``, shape ``batch + (k + 1,)``."""
-        return np.add.reduceat(np.abs(self.coef), self.space.degree_starts, axis=-1)
+        if self._dsums is None:
+            self._dsums = np.add.reduceat(np.abs(self.coef), self.space.degree_starts, axis=-1)
+        return self._dsums
 
     def _mul_model(self, o: "TaylorModel") -> "TaylorModel":
         sp = self.space
