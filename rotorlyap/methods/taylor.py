@@ -202,7 +202,8 @@ class TaylorModel:
     -----
     Arithmetic with other models of the same space, floats, float arrays (exact, broadcast against
     the batch) and :class:`~rotorlyap.methods.balls.Balls` (broadcast against the batch) is
-    rigorous; models of different spaces raise ``ValueError``.
+    rigorous; models of different spaces raise ``ValueError``. Instances are not modified in place
+    (each caches its polynomial bound and degree sums).
     """
 
     __slots__ = ("coef", "rem", "space", "_mag", "_dsums")   # _mag, _dsums: cached, models are not mutated
