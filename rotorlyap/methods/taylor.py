@@ -438,7 +438,7 @@ class TaylorModel:
         H = self._offset_magnitude()
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             rem = _up(_ipow(H / m, k + 1) / m + _PAD / m)  # PAD / m: underflow
-        return self._compose(coeffs, rem)
+        return _clamp(self._compose(coeffs, rem), self.to_balls().reciprocal())
 
     def __truediv__(self, o):
         o = self._operand(o)
@@ -507,7 +507,7 @@ class TaylorModel:
         H = self._offset_magnitude()
         with np.errstate(over="ignore", invalid="ignore"):
             hk = _ipow(H, k + 1) / fact[k + 1]
-            return self._compose(cs, _up(d_s * hk)), self._compose(cc, _up(d_c * hk))
+            return _clamp(self._compose(cs, _up(d_s * hk)), sr), _clamp(self._compose(cc, _up(d_c * hk)), cr)
 
     def sin(self) -> "TaylorModel":
         return self.sin_cos()[0]
@@ -540,7 +540,7 @@ class TaylorModel:
             den = _ipow(q, (k + 1) // 2) * (np.sqrt(q) if (k + 1) % 2 else 1.0)
             rem = _up(_ipow(H, k + 1) / (k + 1) / den)
         rem = np.where(np.isfinite(lo) & np.isfinite(hi), rem, np.nan)
-        return self._compose(coeffs, rem)
+        return _clamp(self._compose(coeffs, rem), self.to_balls().atan())
 
     def sqrt(self) -> "TaylorModel":
         """``sqrt f`` for a model whose range lies above 0: ``sqrt(x0) sum_j binom(1/2, j)
@@ -561,7 +561,19 @@ class TaylorModel:
         lo_ok = np.where(ok, lo, np.nan)
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             rem = _up((bk * _ipow(H / lo_ok, k + 1) + _PAD) * np.sqrt(lo_ok))  # PAD: underflow
-        return self._compose(coeffs, np.where(ok, rem, np.nan))
+        return _clamp(self._compose(coeffs, np.where(ok, rem, np.nan)), self.to_balls().sqrt())
+
+
+def _clamp(model: TaylorModel, ball: Balls) -> TaylorModel:
+    """``model``, or the constant model of ``ball`` where the model's remainder alone is wider than
+    that ball or not finite (both enclose the function: ``ball`` is its ball enclosure over the
+    argument's range; over wide ranges a Taylor polynomial's remainder can exceed the function's
+    whole range, and then the polynomial carries no information worth its remainder)."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        narrower = ball.finite() & ~(ball.upper() - ball.lower() >= 2.0 * model.rem)
+    if not np.any(narrower):
+        return model
+    return where(narrower, TaylorModel.constant(ball, model.space, model.shape), model)
 
 
 def _ipow(x, p: int):
