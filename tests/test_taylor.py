@@ -165,6 +165,17 @@ def test_ray_average_contains_the_average_along_the_segment():
         assert abs(exact - _arb_poly(F, t)) <= arb(float(F.rem))
 
 
+def test_ray_average_over_some_variables_holds_the_others():
+    """Averaging over ``x`` only: ``f = x^2 y + y^3`` gives ``x^2 y / 3 + y^3`` exactly."""
+    x, y = tm.variables([0.0, 0.0], [1.0, 1.0], 3)
+    F = (x * x * y + y * y * y).ray_average(over=[0])
+    G = x * x * y * (1.0 / 3.0) + y * y * y
+    np.testing.assert_allclose(F.coef, G.coef, atol=1e-16)
+    assert F.rem < 1e-14
+    with pytest.raises(ValueError, match="average"):
+        F.ray_average(over=[2])
+
+
 @pytest.mark.parametrize("order", [2, 3, 4])
 def test_exact_cancellations_leave_round_off(order):
     x, y = tm.variables(CENTRE, [0.5, 0.5], order)

@@ -262,17 +262,32 @@ class TaylorModel:
         return TaylorModel._new(self.coef.reshape(tuple(shape) + (self.space.size,)), self.rem.reshape(shape),
                                 self.space)
 
-    def ray_average(self) -> "TaylorModel":
+    def ray_average(self, over=None) -> "TaylorModel":
         """The models of ``F(t) = int_0^1 f(s t) ds``: ``f`` averaged along the segment from the
-        box's centre (``t = 0``) to ``t``.
+        box's centre (``t = 0``) to ``t``, in the variables ``over`` (default all; the others,
+        e.g. the azimuth, held fixed).
 
-        Each coefficient is divided by its degree plus one; the remainder is kept (``s t`` lies in
-        the box, so ``|f(s t) - p(s t)| <= r`` for every ``s``), plus the divisions' rounding. For
-        the Jacobian ``J`` of ``g`` over a box centred at a point ``x0`` this encloses the averaged
-        Jacobian ``K(x) = int_0^1 J(x0 + s (x - x0)) ds`` of ``g(x) = g(x0) + K(x) (x - x0)``
-        (:mod:`rotorlyap.methods.proof`), whose linear terms are half those of ``J``.
+        Each coefficient is divided by its degree in those variables plus one; the remainder is
+        kept (the segment lies in the box, so ``|f - p| <= r`` all along it), plus the divisions'
+        rounding. For the Jacobian ``J`` of ``g`` over a box centred at a point ``x0`` this
+        encloses the averaged Jacobian ``K(x) = int_0^1 J(x0 + s (x - x0)) ds`` of
+        ``g(x) = g(x0) + K(x) (x - x0)`` (:mod:`rotorlyap.methods.proof`), whose linear terms
+        are half those of ``J``.
+
+        Parameters
+        ----------
+        over : sequence of int, optional
+            Indices of the variables averaged (default: every variable).
         """
-        c = self.coef / (self.space.degree + 1.0)
+        sp = self.space
+        if over is None:
+            degree = sp.degree
+        else:
+            idx = np.asarray(list(over), dtype=int)
+            if idx.size and (idx.min() < 0 or idx.max() >= sp.n):
+                raise ValueError(f"variables to average must lie in 0..{sp.n - 1}, got {list(over)!r}")
+            degree = sp.exponents[:, idx].sum(axis=1)
+        c = self.coef / (degree + 1.0)
         # each quotient within u |c_k| + eta (F1 of rotorlyap.methods.balls)
         return TaylorModel._new(c, _up(self.rem + U * np.abs(c).sum(axis=-1)), self.space)
 
