@@ -304,14 +304,19 @@ def _steady_models(enc: BladeEnclosure, tau: TaylorModel, n: int):
     """Models of the steady motion and of its derivative over the ``n`` azimuth intervals, in the
     azimuth variable ``tau`` (``psi = psi_k + (pi / n) tau``): the cubic Hermite piece of each
     interval (``n`` a multiple of the grid ``K``), exactly as a polynomial in ``tau``, its
-    coefficients balls as :func:`rotorlyap.methods.intervals.hermite_enclosure` forms them."""
+    coefficients balls as :func:`rotorlyap.methods.intervals.hermite_enclosure` forms them; for
+    ``n`` a divisor of ``K`` (coarse intervals over several pieces) the hulls of the pieces, balls
+    that do not follow ``tau``."""
     if enc.motion is None:
         state = np.broadcast_to(enc.state, (n, 6))
         return [Balls(state[:, i]) for i in range(6)], [Balls(np.zeros(n)) for _ in range(6)]
     values, slopes = np.asarray(enc.motion.values, float), np.asarray(enc.motion.slopes, float)
     K = values.shape[0]
+    if n < K and K % n == 0:   # coarse intervals: the hull of the pieces each spans (no tau dependence)
+        xi, dxi = iv.hermite_enclosure(values, slopes, n)
+        return [xi[:, i] for i in range(6)], [dxi[:, i] for i in range(6)]
     if n % K:
-        raise ValueError(f"n_intervals ({n}) must be a multiple of the steady motion's grid ({K})")
+        raise ValueError(f"n_intervals ({n}) must be a multiple or a divisor of the steady motion's grid ({K})")
     sub = n // K
     j = np.arange(n) // sub
     pos = np.arange(n) % sub
@@ -351,7 +356,8 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         hover), six model variables. Else the ``n`` uniform azimuth intervals of one period: the
         azimuth offset within each interval is a seventh variable (the last), ``batch`` must
         broadcast to ``(n,)`` (one box per interval), and the steady motion (a multiple ``n`` of
-        its grid) enters as its exact piecewise cubic.
+        its grid) enters as its exact piecewise cubic (``n`` a divisor of the grid: the hull of the
+        pieces each interval spans).
 
     Returns
     -------
