@@ -338,7 +338,8 @@ def test_forward_flight_models_contain_the_sampled_equations_and_are_tighter_tha
     """The trimmed helicopter at mu = 0.1 (compressible sections, Pitt-Peters inflow), about its
     tabulated periodic motion, the azimuth a seventh model variable on 16 intervals: the models
     contain the float right-hand side and Jacobian at random azimuths and states of the boxes
-    ``|y_i| <= 0.1``, and the Jacobian's enclosure is over 50 times narrower than the balls'."""
+    ``|y_i| <= 0.1``, and the Jacobian's enclosure is over 50 times narrower than the balls'; on 8
+    coarser intervals (the steady motion's hull over two pieces) they contain them too."""
     from rotorlyap.analysis.enclosure import BladeEnclosure
     from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
     from rotorlyap.conventions import DEFAULT_SCALES
@@ -370,6 +371,12 @@ def test_forward_flight_models_contain_the_sampled_equations_and_are_tighter_tha
     assert np.all((jlo[k] - slack <= J) & (J <= jhi[k] + slack))
     balls = enc.evaluate(n, radius=radius).jacobian
     assert np.max(balls.upper() - balls.lower()) > 50 * np.max(jhi - jlo)
+    # coarse intervals (8, each over two pieces of the steady motion): the pieces' hull
+    coarse = taylor_evaluate(enc, np.zeros(6), radius, 2, n_intervals=n // 2)
+    clo, chi = coarse.jacobian.bounds()
+    assert np.all((clo[k // 2] - slack <= J) & (J <= chi[k // 2] + slack))
+    vlo, vhi = coarse.value.bounds()
+    assert np.all((vlo[k // 2] - 1e-12 * scale <= value) & (value <= vhi[k // 2] + 1e-12 * scale))
 
 
 @pytest.mark.parametrize("centre", [-0.3, -0.02, 0.0, 0.05, 0.4])
