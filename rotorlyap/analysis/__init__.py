@@ -20,6 +20,8 @@
   it from nothing but the file;
 * :mod:`~rotorlyap.analysis.proof`: :func:`prove_blade`, the quadratic function's certificate
   proved by ball arithmetic;
+* :mod:`~rotorlyap.analysis.taylor_enclosure`: :func:`taylor_evaluate`, the hovering blade's
+  equations and Jacobian on Taylor models (issue 41; not yet used by the proofs);
 * :mod:`~rotorlyap.analysis.sweep`: :func:`sweep`, certificates over a grid of blades and
   conditions, on every core or a Dask cluster, as one table.
 """

@@ -316,6 +316,50 @@ def _min_const(x: Jet, cap: float, tape: _Slopes) -> Jet:
     return _piecewise_linear(x, iv.minimum(x.v, cap), slope, tape)
 
 
+def _strip_wind(T: list, st: np.ndarray, k: int, az, advance=None) -> tuple:
+    """The relative wind ``(u_y, u_z)`` at the strip ``k`` and its square ``V2``: the air's
+    velocity (inflow ``az``; ``advance = (ax, ay)`` in forward flight) in the blade's axes less the
+    blade's own (its velocity ``T[10:12]`` and angular velocity ``T[12:15]`` at the strip's point)."""
+    if advance is not None:
+        ax, ay = advance
+        air_y = T[36] * ax + T[37] * ay + T[38] * az
+        air_z = T[39] * ax + T[40] * ay + T[41] * az
+    else:
+        air_y = T[38] * az
+        air_z = T[41] * az
+    vPy, vPz, wx, wy, wz = T[10], T[11], T[12], T[13], T[14]
+    rx = float(st[_RX, k])
+    u_y = air_y - (vPy + wz * rx - wx * float(st[_WZ, k]))
+    u_z = air_z - (vPz + wx * float(st[_WY, k]) - wy * rx)
+    return u_y, u_z, u_y * u_y + u_z * u_z
+
+
+def _add_strip(sums: tuple, st: np.ndarray, k: int, u_y, u_z, V2, Vm, coefficients: tuple, q_rel, pg,
+               damped: bool, compressible: bool) -> tuple:
+    """The strip ``k``'s loads added to ``sums = (sFy, sFz, Mx, My, Mz)`` (forces and moments about
+    the hinge): lift and drag from the coefficients ``(cl, cd, cm)`` and the wind, the pitching
+    moment about the pitch axis (with the pitch-rate damping couple, times the Prandtl-Glauert
+    factor ``pg`` for compressible sections)."""
+    cl, cd, cm = coefficients
+    sFy, sFz, Mx, My, Mz = sums
+    rx = float(st[_RX, k])
+    qn = Vm * float(st[_QN, k])
+    Fy = qn * (cd * u_y + cl * u_z)
+    Fz = qn * (cd * u_z - cl * u_y)
+    Mx_ac = V2 * cm * float(st[_MN, k])
+    if damped:
+        couple = Vm * q_rel * float(st[_DN, k])
+        Mx_ac = Mx_ac + (couple * pg if compressible else couple)
+    return (Fy + sFy, Fz + sFz, Fz * float(st[_RY, k]) - Fy * float(st[_RZ, k]) + Mx_ac + Mx, My - Fz * rx,
+            Mz + Fy * rx)
+
+
+def _generalised_air_forces(T: list, sums: tuple) -> list:
+    """The three generalised forces of the summed strip loads ``(sFy, sFz, Mx, My, Mz)``."""
+    sFy, sFz, Mx, My, Mz = sums
+    return [T[18 + i] * sFy + T[21 + i] * sFz + T[24 + i] * Mx + T[27 + i] * My + T[30 + i] * Mz for i in range(3)]
+
+
 def _attack_angle(u_y: Jet, u_z: Jet) -> Jet:
     """``alpha = atan2(u_z, -u_y)`` with its derivatives: ``X = -u_y``, ``Y = u_z``,
     ``alpha_X = -Y / V^2``, ``alpha_Y = X / V^2``, ``alpha_XX = -alpha_YY = 2 X Y / V^4``,
@@ -449,7 +493,6 @@ class BladeEnclosure:
         F1 = T[7] - z[4] * float(sc[_C1])
         F2 = T[8] - z[5] * float(sc[_C2])
         if sc[_ACTIVE] != 0.0:
-            vPy, vPz, wx, wy, wz = T[10], T[11], T[12], T[13], T[14]
             cpsi = iv.cos(psi)
             muVR = float(sc[_MUVR])
             if muVR != 0.0:
@@ -457,22 +500,13 @@ class BladeEnclosure:
                 ay = -iv.sin(psi) * muVR
             compressible = sc[_COMPRESSIBLE] != 0.0
             q_rel = T[12] - T[35] * om
-            sFy = sFz = Mx = My = Mz = 0.0
+            sums = (0.0,) * 5
             for k in range(st.shape[1]):
                 if sc[_UNIFORM] != 0.0:
                     az = iv.const(float(st[_IA, k]))
                 else:
                     az = cpsi * float(st[_IB, k]) + float(st[_IA, k])
-                if muVR != 0.0:
-                    air_y = T[36] * ax + T[37] * ay + T[38] * az
-                    air_z = T[39] * ax + T[40] * ay + T[41] * az
-                else:
-                    air_y = T[38] * az
-                    air_z = T[41] * az
-                rx = float(st[_RX, k])
-                u_y = air_y - (vPy + wz * rx - wx * float(st[_WZ, k]))
-                u_z = air_z - (vPz + wx * float(st[_WY, k]) - wy * rx)
-                V2 = u_y * u_y + u_z * u_z
+                u_y, u_z, V2 = _strip_wind(T, st, k, az, (ax, ay) if muVR != 0.0 else None)
                 Vm = iv.sqrt(V2)
                 alpha = _attack_angle(u_y, u_z)
                 wind = ~iv.is_finite(alpha.v)
@@ -502,21 +536,12 @@ class BladeEnclosure:
                     cm = cm * pg
                     dm = mach - (float(sc[_MCRIT0]) - 0.1 * _abs(cl, tape))
                     cd = cd + WAVE_DRAG_FACTOR * _pos4(dm)
-                qn = Vm * float(st[_QN, k])
-                Fy = qn * (cd * u_y + cl * u_z)
-                Fz = qn * (cd * u_z - cl * u_y)
-                Mx_ac = V2 * cm * float(st[_MN, k])
-                if sc[_PITCH_DAMPED] != 0.0:
-                    couple = Vm * q_rel * float(st[_DN, k])
-                    Mx_ac = Mx_ac + (couple * pg if compressible else couple)
-                sFy = Fy + sFy
-                sFz = Fz + sFz
-                Mx = Fz * float(st[_RY, k]) - Fy * float(st[_RZ, k]) + Mx_ac + Mx
-                My = My - Fz * rx
-                Mz = Mz + Fy * rx
-            F0 = F0 + (T[18] * sFy + T[21] * sFz + T[24] * Mx + T[27] * My + T[30] * Mz)
-            F1 = F1 + (T[19] * sFy + T[22] * sFz + T[25] * Mx + T[28] * My + T[31] * Mz)
-            F2 = F2 + (T[20] * sFy + T[23] * sFz + T[26] * Mx + T[29] * My + T[32] * Mz)
+                sums = _add_strip(sums, st, k, u_y, u_z, V2, Vm, (cl, cd, cm), q_rel, pg,
+                                  sc[_PITCH_DAMPED] != 0.0, compressible)
+            air = _generalised_air_forces(T, sums)
+            F0 = F0 + air[0]
+            F1 = F1 + air[1]
+            F2 = F2 + air[2]
         s = 1 / (om * om)
         return tuple(acc * s for acc in solve_sym3(T[0:6], F0, F1, F2))
 

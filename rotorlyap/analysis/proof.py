@@ -39,6 +39,7 @@ from ..model.blade import Blade
 from ..model.steady import TabulatedMotion, as_steady_motion
 from .enclosure import BladeEnclosure
 from .functions import QuadraticFunction
+from .taylor_enclosure import taylor_evaluate
 
 _STATE_INDEX = {name: i for i, name in enumerate(STATE_NAMES)}
 
@@ -318,7 +319,7 @@ class EnclosureWidth:
 
 
 def enclosure_width(blade, steady=None, bound: float = 0.1, *, scales=None, samples: int = 256, seed: int = 0,
-                    aerodynamics: bool = True) -> EnclosureWidth:
+                    aerodynamics: bool = True, arithmetic: str | None = None, order: int = 2) -> EnclosureWidth:
     """Measure the ball enclosure of the blade's Jacobian against the Jacobian itself.
 
     Parameters
@@ -337,6 +338,12 @@ def enclosure_width(blade, steady=None, bound: float = 0.1, *, scales=None, samp
         Seed of the sample.
     aerodynamics : bool
         False encloses the blade without its air loads (the inertial, spring and damper terms).
+    arithmetic : {"auto", "balls", "arb", "taylor"}, optional
+        The enclosure: ball arithmetic (:class:`BladeEnclosure`, default ``"auto"``) or Taylor
+        models of order ``order`` (:func:`rotorlyap.analysis.taylor_enclosure.taylor_evaluate`,
+        issue 41: they keep the cancellations of the pitch equation that the balls lose).
+    order : int
+        Order of the Taylor models (``arithmetic="taylor"`` only).
 
     Returns
     -------
@@ -349,10 +356,13 @@ def enclosure_width(blade, steady=None, bound: float = 0.1, *, scales=None, samp
     if not steady.is_constant:
         raise ValueError("enclosure_width measures a constant steady motion (hover)")
     model = blade if aerodynamics else _without_air(blade)
-    enc = BladeEnclosure(model, steady)
-    ev = enc.evaluate(1, radius=bound * a)
+    if arithmetic == "taylor":
+        enc = BladeEnclosure(model, steady, arithmetic="balls")
+        lo, hi = taylor_evaluate(enc, np.zeros(6), bound * a, order).jacobian.bounds()
+    else:
+        ev = BladeEnclosure(model, steady, arithmetic=arithmetic).evaluate(1, radius=bound * a)
+        lo, hi = iv.lower(ev.jacobian[0]), iv.upper(ev.jacobian[0])
     scale = a[None, :] / a[:, None]
-    lo, hi = iv.lower(ev.jacobian[0]), iv.upper(ev.jacobian[0])
     radius = 0.5 * (hi - lo) * scale
     rng = np.random.default_rng(seed)
     corners = np.array(np.meshgrid(*[[-1.0, 1.0]] * 6, indexing="ij")).reshape(6, -1).T

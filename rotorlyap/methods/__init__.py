@@ -15,6 +15,8 @@
 * :mod:`~rotorlyap.methods.validation`: certificates measured against simulated motions;
 * :mod:`~rotorlyap.methods.intervals`: ball arithmetic (Arb) with derivatives, rigorous
   eigenvalue bounds;
+* :mod:`~rotorlyap.methods.taylor`: Taylor models (polynomials in the box variables with a
+  rigorous remainder), enclosures that keep the cancellations ball arithmetic loses;
 * :mod:`~rotorlyap.methods.proof`: proofs of technical stability with a quadratic function;
 * :mod:`~rotorlyap.methods.examples`: small periodic systems for the method chapters.
 
