@@ -192,6 +192,7 @@ class Certificate:
 
 def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", function: str = "auto",
             A: float | None = None, scales=None, n_psi: int = 36, Q=None, verify: bool = False,
+            refine: bool | None = None,
             **engine_options) -> Certificate:
     """Certify technical stability of the blade's trimmed steady motion at ``mu``.
 
@@ -224,6 +225,13 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         up to the numerical bound; seconds in hover, minutes in forward flight); in forward flight
         the periodic motion is first refined by shooting (module docstring). The prover handles
         the quadratic function: with ``verify=True``, ``"auto"`` means ``"quadratic"``.
+    refine : bool, optional
+        In forward flight, refine the trim's periodic motion by shooting
+        (:func:`rotorlyap.model.steady.refine_motion`, a residual near round-off) and certify about
+        it, instead of the tabulated Fourier motion (whose residual is that of its truncation, up
+        to some 1e-3 of the rates at mu = 0.25). Default: with ``verify`` only. A certificate to be
+        saved as a file (:meth:`Certificate.save`) is best made about the refined motion, whose
+        table :func:`rotorlyap.verify` finds to solve the equations.
     **engine_options
         Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ...).
 
@@ -249,10 +257,11 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     report(f"trim ({condition}, mu = {float(mu):g})")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
-    report("steady motion" + (" (refined by shooting)" if mu and verify else ""))
+    refine = bool(verify) if refine is None else bool(refine)
+    report("steady motion" + (" (refined by shooting)" if mu and refine else ""))
     if mu == 0.0:
         steady = trim.steady
-    elif verify:
+    elif refine:
         steady = refine_motion(Blade(trim.params, mu), trim.motion)
     else:
         steady = tabulate_motion(trim.motion)

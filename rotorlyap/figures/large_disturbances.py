@@ -34,7 +34,7 @@ from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
 __all__ = ["ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "CASES", "Case", "CaseResult", "LargeDisturbances",
-           "ProofLimit", "SET_SLICE_POINTS", "WIDTH_BOUNDS", "anatomy", "figure_reach", "figure_slices",
+           "ProofLimit", "SET_SLICE_POINTS", "TAYLOR_ORDER", "WIDTH_BOUNDS", "anatomy", "figure_reach", "figure_slices",
            "large_disturbances", "proof_limit", "set_slice"]
 
 
@@ -279,17 +279,26 @@ class ProofLimit:
         sampled Jacobian.
     width_without_air : rotorlyap.analysis.proof.EnclosureWidth
         The same for the blade without air loads, on the first box.
+    width_taylor : rotorlyap.analysis.proof.EnclosureWidth
+        The enclosure in Taylor models of order :data:`TAYLOR_ORDER` (:mod:`rotorlyap.methods.taylor`),
+        which keep the cancellations, on the first box.
     """
 
     A: float
     lambda0: float
     widths: tuple[EnclosureWidth, ...]
     width_without_air: EnclosureWidth
+    width_taylor: EnclosureWidth
 
     @property
     def width(self) -> EnclosureWidth:
         """The enclosure on the first (largest) box."""
         return self.widths[0]
+
+
+#: Order of the Taylor models :func:`proof_limit` measures the enclosure with (order 1 widens
+#: linearly with the box; 2 keeps the blade's cancellations to the sampled variation).
+TAYLOR_ORDER = 2
 
 
 def proof_limit(fun) -> ProofLimit:
@@ -298,7 +307,9 @@ def proof_limit(fun) -> ProofLimit:
     proof = prove_designed(fun)
     widths = tuple(enclosure_width(fun.blade, fun.steady, b, scales=fun.scales) for b in WIDTH_BOUNDS)
     dry = enclosure_width(fun.blade, fun.steady, WIDTH_BOUNDS[0], scales=fun.scales, aerodynamics=False)
-    return ProofLimit(proof.A, proof.min_lambda0, widths, dry)
+    taylor = enclosure_width(fun.blade, fun.steady, WIDTH_BOUNDS[0], scales=fun.scales, arithmetic="taylor",
+                             order=TAYLOR_ORDER)
+    return ProofLimit(proof.A, proof.min_lambda0, widths, dry, taylor)
 
 
 def _is_quadratic_form(fun) -> bool:
@@ -436,6 +447,9 @@ class LargeDisturbances:
                 out.append(f"  certificate file {r.case.file}, verified from nothing:")
                 out += ["    " + line for line in r.verification.splitlines()]
             for c in r.candidates:
+                if not c.certified:
+                    out.append(f"  {c.function}: not certified")
+                    continue
                 reach, whole = r.reach(c.function), r.set_reach(c.function)
                 out.append(f"  {c.function}: certified={c.certified}, A = {_sig(c.bound):g}, "
                            f"lambda0 = {_sig(c.start_region):g}, of the simulated region: ball "
@@ -462,7 +476,10 @@ class LargeDisturbances:
                            f"loads), sampled variation {_sig(pl.width.variation.max()):g}, contains the sample: "
                            f"{pl.width.contained}; on |y_i| <= {pl.widths[-1].bound:g}: radius up to "
                            f"{_sig(pl.widths[-1].radius.max()):g}, sampled variation "
-                           f"{_sig(pl.widths[-1].variation.max()):g}")
+                           f"{_sig(pl.widths[-1].variation.max()):g}; in Taylor models of order {TAYLOR_ORDER} "
+                           f"on |y_i| <= {pl.width_taylor.bound:g}: radius up to "
+                           f"{_sig(pl.width_taylor.radius.max()):g}, {pl.width_taylor.ratio:.2f} times the "
+                           f"sampled variation, contains the sample: {pl.width_taylor.contained}")
             sim = r.simulated
             cap = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
             out.append("  simulated (deg, deg/s): " + ", ".join(
@@ -489,11 +506,13 @@ class LargeDisturbances:
                 f[f"ch11_{k}_ball_reach"] = _sig(100 * np.nanmin(r.reach(r.chosen)))
                 f[f"ch11_{k}_set_weakest"] = _HINGE_WORDS[int(np.nanargmin(whole))]
                 f[f"ch11_{k}_set_flap"] = _sig(r.per_component(np.asarray(r.candidate(r.chosen).start_set))[0])
-            if e is not None:
+            if e is not None and e.certified:
                 f[f"ch11_{k}_e_flap"] = _sig(r.per_component(e.start_region)[0])
                 f[f"ch11_{k}_e_reach"] = _sig(100 * np.nanmin(r.reach("energy")))
-                f[f"ch11_{k}_gain"] = _sig(e.start_region / q.start_region)
-                gains.append(e.start_region / q.start_region)
+                if q.certified:
+                    f[f"ch11_{k}_gain"] = _sig(e.start_region / q.start_region)
+                if q.certified and r.case.mu == 0:  # the hovers' gains, which the text quotes
+                    gains.append(e.start_region / q.start_region)
                 if r.anatomy is not None:
                     an = r.anatomy
                     f[f"ch11_{k}_energy_share"] = _sig(100 * an.energy_share)
@@ -524,6 +543,9 @@ class LargeDisturbances:
                 f["ch11_width_small_bound"] = _sig(small.bound)
                 f["ch11_width_small_radius"] = _sig(small.radius.max())
                 f["ch11_width_small_ratio"] = _sig(small.ratio)
+                f["ch11_width_taylor_radius"] = _sig(pl.width_taylor.radius.max())
+                f["ch11_width_taylor_ratio"] = f"{pl.width_taylor.ratio:.2f}"
+                f["ch11_width_taylor_order"] = str(TAYLOR_ORDER)
             f[f"ch11_{k}_q_A"] = _sig(q.bound)
             f[f"ch11_{k}_growth"] = _sig(r.growth_rate)
         if gains:
@@ -583,6 +605,11 @@ def large_disturbances(cases=CASES, *, workers: int | None = None,
 _FUNCTION_STYLE = {"energy": ("augmented energy", "o", -1), "quadratic": ("quadratic function", "s", 1)}
 
 
+def _flight_color(mu: float) -> str:
+    """A colour per advance ratio of the trimmed helicopter (blues, then orange at the paper's 0.25)."""
+    return "#0072B2" if mu < 0.15 else ("#56B4E9" if mu < 0.225 else "#E69F00")
+
+
 def figure_reach(data: LargeDisturbances):
     """Each function's certified start set (marker) and its inner ball (tick, joined by a line) over
     the simulated region, per state component and case."""
@@ -591,7 +618,7 @@ def figure_reach(data: LargeDisturbances):
     n = len(data.results)
     width = 0.8 / n
     for j, r in enumerate(data.results):
-        color = CG_COLORS.get(r.case.blade[1], "0.3") if r.case.mu == 0 else ("#0072B2" if r.case.mu < 0.15 else "#56B4E9")
+        color = CG_COLORS.get(r.case.blade[1], "0.3") if r.case.mu == 0 else _flight_color(r.case.mu)
         for fn, (name, marker, side) in _FUNCTION_STYLE.items():
             whole, ball = 100 * r.set_reach(fn), 100 * r.reach(fn)
             if np.all(np.isnan(whole)):
@@ -606,13 +633,13 @@ def figure_reach(data: LargeDisturbances):
     ax.axhline(50, color="0.5", lw=0.8, ls=":")
     ax.set_xticks(x, [f"{h}" for h in HINGES] + [f"{h} rate" for h in HINGES])
     ax.set_ylabel("certified start / simulated region (%)")
-    ax.set_ylim(0.005, 200)
+    ax.set_ylim(0.002, 200)
     ax.grid(axis="y", which="major", lw=0.4, color="0.85")
     fig.legend(loc="upper center", ncol=2, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 1.0))
     return finish(fig, rect=(0, 0, 1, 0.72))
 
 
-def figure_slices(data: LargeDisturbances, keys=("forward", "backward")):
+def figure_slices(data: LargeDisturbances, keys=("forward", "mu01", "backward")):
     """The simulated slices (flap-lag, flap-pitch) with the default certificate's start set and its
     inner ball, per case."""
     fig, axes = subplots(len(keys), 2, figsize=(6.6, 3.0 * len(keys)), squeeze=False)
@@ -639,6 +666,6 @@ def figure_slices(data: LargeDisturbances, keys=("forward", "backward")):
     from matplotlib.patches import Patch
     handles = [Patch(facecolor="#CDE8D8", edgecolor="#009E73", label="simulated: returns"),
                Line2D([], [], color="black", lw=1.0, label="certified start set"),
-               Line2D([], [], color="black", lw=0.9, ls="--", label="its inner ball (lambda0)")]
+               Line2D([], [], color="black", lw=0.9, ls="--", label=r"its inner ball ($\lambda_0$)")]
     fig.legend(handles=handles, loc="upper center", ncol=3, fontsize=7, frameon=False)
     return finish(fig, rect=(0, 0, 1, 0.94))
