@@ -332,18 +332,16 @@ def falsify_file(path, *, evaluations: int, n_azimuths: int = 4) -> Attack:
     from types import SimpleNamespace
 
     from rotorlyap.analysis.certificate_file import read_certificate
-    from rotorlyap.methods.start_set import start_set
+    from rotorlyap.analysis.certify import function_start_set
 
     stored = read_certificate(path)
     fun = stored.function
-    quadratic = stored.family == "quadratic"
-    autonomous = fun.constant if quadratic else fun.autonomous
     n = stored.lambda0.size
     result = SimpleNamespace(rule="sound", scales=stored.scales, A=stored.A, alpha=stored.level, level=stored.level,
                              period=stored.period, psi=stored.period * np.arange(n) / n, lambda0=stored.lambda0,
                              stable=np.ones(n, dtype=bool), check_evaluations=evaluations, message=path.name)
     cert = SimpleNamespace(result=result, lyapunov=fun, certified=True, function=stored.family,
                            start_region=float(stored.lambda0.min()), message=path.name,
-                           start_set=start_set(fun.W, stored.level, stored.A, stored.scales, period=stored.period,
-                                               autonomous=autonomous, quadratic=quadratic))
+                           start_set=function_start_set(fun, stored.family, stored.level, stored.A, stored.scales,
+                                                        stored.period))
     return falsify_certificate(cert, evaluations=evaluations, n_azimuths=n_azimuths)

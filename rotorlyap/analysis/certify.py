@@ -52,7 +52,7 @@ from .nonlinear_functions import FAMILIES, designed_function
 from .proof import prove_blade
 from .stability import blade_stability
 
-__all__ = ["FUNCTIONS", "Candidate", "Certificate", "certify"]
+__all__ = ["FUNCTIONS", "Candidate", "Certificate", "certify", "function_start_set"]
 
 FUNCTIONS = ("auto", "quadratic") + FAMILIES
 """The ``function`` choices of :func:`certify` (module docstring)."""
@@ -326,14 +326,34 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
 
 
 def _start_set(fun, res: TechnicalStabilityResult, family: str) -> StartSet | None:
-    """The start set a sound-rule certificate covers, along the signed hinge axes at every start
-    azimuth (one where ``W`` does not depend on it); None for the paper's rule."""
+    """The start set a sound-rule certificate covers (:func:`function_start_set`); None for the
+    paper's rule."""
     if res.rule != "sound":
         return None
+    return function_start_set(fun, family, res.level, res.A, res.scales, res.period)
+
+
+def function_start_set(fun, family: str, level: float, A: float, scales, period: float = 2 * math.pi) -> StartSet:
+    """The start set ``{||x|| < A, W < level}`` of one of :func:`certify`'s functions, measured along
+    the signed hinge axes at every start azimuth (one where ``W`` does not depend on it; the
+    crossing in closed form for the quadratic function): :func:`rotorlyap.methods.start_set.start_set`.
+
+    Parameters
+    ----------
+    fun : QuadraticFunction or DesignedFunction
+        The function (``W``).
+    family : str
+        ``"quadratic"``, ``"energy"`` or ``"polynomial"``.
+    level, A : float
+        The certificate's level and bound (scaled norm).
+    scales : array_like
+        The norm's ``a_i``, rad and rad/rad.
+    period : float
+        rad.
+    """
     quadratic = family == "quadratic"
     autonomous = fun.constant if quadratic else fun.autonomous
-    return start_set(fun.W, res.level, res.A, res.scales, period=res.period, autonomous=autonomous,
-                     quadratic=quadratic)
+    return start_set(fun.W, level, A, scales, period=period, autonomous=autonomous, quadratic=quadratic)
 
 
 class _NotDesigned(Exception):

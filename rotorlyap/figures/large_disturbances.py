@@ -23,13 +23,12 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.certificate_file import read_certificate, verify
-from ..analysis.certify import Candidate, certify
+from ..analysis.certify import Candidate, certify, function_start_set
 from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
 from ..analysis.region import SLICES, StableRegion, stable_region
 from ..analysis.sweep import process_map
 from ..conventions import HINGES, STATE_NAMES
 from ..methods.sampling import unit_sphere_points
-from ..methods.start_set import start_set
 from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
@@ -352,7 +351,8 @@ def _compute(task: tuple[str, Case, Path | None]):
         stored, checked = _from_file(Path(folder) / case.file, case)
         verification = checked.summary()
         lam_file = float(stored.lambda0.min()) if checked.holds else 0.0
-        reach = (_start_set_of(stored.function, stored.level, stored.A, stored.scales, stored.period)
+        reach = (function_start_set(stored.function, stored.family, stored.level, stored.A, stored.scales,
+                                    stored.period)
                  if checked.holds else None)
         candidates += (Candidate(stored.family, checked.holds, stored.A if checked.holds else 0.0, lam_file,
                                  checked.summary().splitlines()[0],
@@ -379,13 +379,6 @@ def _from_file(path: Path, case: Case):
         raise ValueError(f"{path}: a certificate of another case (mu = {stored.mu:g}, {stored.condition}, "
                          f"C.G. at {stored.params.cg_position:g} c) than {case.label}")
     return stored, verify(path)
-
-
-def _start_set_of(fun, level: float, A: float, scales, period: float):
-    """The start set of a function rebuilt from a file, as :func:`rotorlyap.certify` measures it."""
-    quadratic = not hasattr(fun, "autonomous")
-    autonomous = fun.constant if quadratic else fun.autonomous
-    return start_set(fun.W, level, A, scales, period=period, autonomous=autonomous, quadratic=quadratic)
 
 
 _HINGE_WORDS = tuple(f"{h} angle" for h in HINGES) + tuple(f"{h} rate" for h in HINGES)
