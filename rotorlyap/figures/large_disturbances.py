@@ -508,7 +508,7 @@ class LargeDisturbances:
                     gains.append(e.start_region / q.start_region)
                 if r.anatomy is not None:
                     an = r.anatomy
-                    f[f"ch11_{k}_energy_share"] = _sig(100 * an.energy_share)
+                    f[f"ch11_{k}_energy_share"] = _pct(an.energy_share)  # "0", never "0.0"
                     first = next((kk for kk, m in zip(an.radii, an.max_dw) if m >= 0), math.nan)
                     f[f"ch11_{k}_positive_at"] = first
                     if math.isfinite(first):
