@@ -227,8 +227,10 @@ def worst_start_peak(f, result, *, n_periods: float = 20.0, n_dir: int = 32, rou
     """Largest peak norm / ``A`` of motions started at ``0.99 lambda0_j``, the start direction
     chosen by optimisation: the best of ``n_dir`` directions at each of ``n_azimuths`` certified
     azimuths (evenly spread; one if nothing depends on the azimuth), then improved by ``rounds``
-    of 16 perturbations (all motions of a round integrated together, by fixed-step RK4 with
-    :data:`PEAK_STEPS` steps per period, the peak taken at every step).
+    of 16 perturbations per azimuth (fixed-step RK4 with :data:`PEAK_STEPS` steps per period, the
+    peak taken at every step). The azimuths are searched independently, but the motions of a
+    round, of every azimuth, are integrated together in one batch (each with its own start
+    azimuth): four batches in all instead of four per azimuth.
 
     With ``W`` (the certificate's function) the starts lie in the whole start set
     ``{||x|| < A, W < alpha}`` instead (:mod:`rotorlyap.methods.start_set`): at 0.97 of the first
@@ -236,35 +238,39 @@ def worst_start_peak(f, result, *, n_periods: float = 20.0, n_dir: int = 32, rou
     only about its inner ball, meets the worst motions."""
     n, a = result.scales.size, result.scales
     rng = np.random.default_rng(7)
-    worst = 0.0
     certified = np.flatnonzero(result.stable)
-    for j in certified[::max(1, certified.size // n_azimuths)][:n_azimuths]:
-        def radius(u, j=j):
-            if W is None:
-                return np.full(u.shape[0], 0.99 * result.lambda0[j])
-            psi = np.full(u.shape[0], result.psi[j])
-            return 0.97 * band_level(W, psi, u, a, result.level, result.A, quadratic=quadratic)
+    js = certified[::max(1, certified.size // n_azimuths)][:n_azimuths]
+    k = js.size
 
-        def peaks(u):
-            run = integrate_batch(f, radius(u)[:, None] * u * a, result.psi[j], n_periods, scales=a,
-                                  bound=10.0 * result.A, steps_per_period=PEAK_STEPS, period=result.period)
-            return np.where(run.left, np.inf, run.peak)
+    def peaks(u, per):
+        """Peaks of the motions from directions ``u`` (``per`` rows for each azimuth of ``js``)."""
+        psi = np.repeat(result.psi[js], per)
+        if W is None:
+            r = 0.99 * np.repeat(result.lambda0[js], per)
+        else:
+            r = 0.97 * band_level(W, psi, u, a, result.level, result.A, quadratic=quadratic)
+        run = integrate_batch(f, r[:, None] * u * a, psi, n_periods, scales=a, bound=10.0 * result.A,
+                              steps_per_period=PEAK_STEPS, period=result.period)
+        return np.where(run.left, np.inf, run.peak).reshape(k, per)
 
-        u = rng.normal(size=(n_dir, n))
-        u /= np.linalg.norm(u, axis=1, keepdims=True)
-        p = peaks(u)
-        best_u, best_p = u[np.argmax(p)], p.max()
-        step = 0.3
-        for _ in range(rounds):
-            cand = best_u + step * rng.normal(size=(16, n))
-            cand /= np.linalg.norm(cand, axis=1, keepdims=True)
-            pc = peaks(cand)
-            if pc.max() > best_p:
-                best_u, best_p = cand[np.argmax(pc)], pc.max()
-            else:
-                step *= 0.5
-        worst = max(worst, best_p / result.A)
-    return worst
+    def unit(v):
+        return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+    u = unit(rng.normal(size=(k, n_dir, n)))
+    p = peaks(u.reshape(-1, n), n_dir)
+    rows = np.arange(k)
+    best = np.argmax(p, axis=1)
+    best_u, best_p = u[rows, best], p[rows, best]
+    step = np.full(k, 0.3)
+    for _ in range(rounds):
+        cand = unit(best_u[:, None, :] + step[:, None, None] * rng.normal(size=(k, 16, n)))
+        pc = peaks(cand.reshape(-1, n), 16)
+        i = np.argmax(pc, axis=1)
+        better = pc[rows, i] > best_p
+        best_u = np.where(better[:, None], cand[rows, i], best_u)
+        best_p = np.where(better, pc[rows, i], best_p)
+        step = np.where(better, step, 0.5 * step)
+    return float(np.max(best_p)) / result.A
 
 
 def start_set_excess(W, start, *, evaluations: int, seed: int = 5) -> float:
