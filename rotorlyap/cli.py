@@ -733,22 +733,33 @@ def _progress_listener():
 
 
 def progress_bar(stream: TextIO = sys.stderr, width: int = 30) -> Callable[[int, int], None]:
-    """A ``progress(done, total)`` hook drawing ``[#####     ] 12/40  35 s`` on ``stream``: redrawn on one
-    line (``\\r``) on a terminal, a line every 5 % otherwise (a log file)."""
+    """A ``progress(done, total)`` hook for the sweep. On a terminal, a ``tqdm`` bar (the
+    maintained library :class:`rotorlyap.progress.Bar` draws the stages with); off a terminal (a
+    log file), a line ``[#####     ] 12/40  35 s`` every 5 %, which a log keeps readable where a
+    redrawn bar would leave carriage returns."""
+    if stream.isatty():
+        from tqdm import tqdm
+
+        bar = []
+
+        def tick(done: int, total: int) -> None:
+            if not bar:
+                bar.append(tqdm(total=total, desc="points", file=stream, dynamic_ncols=True))
+            bar[0].n = done
+            bar[0].refresh()
+            if done >= total:
+                bar[0].close()
+        return tick
     start = time.perf_counter()
     last = [-1]
 
     def draw(done: int, total: int) -> None:
+        step = 20 * done // max(total, 1)
+        if step == last[0] and done < total:
+            return
+        last[0] = step
         filled = width * done // max(total, 1)
-        line = f"[{'#' * filled}{' ' * (width - filled)}] {done}/{total}  {time.perf_counter() - start:.0f} s"
-        if stream.isatty():
-            stream.write("\r" + line + ("\n" if done >= total else ""))
-        else:
-            step = 20 * done // max(total, 1)
-            if step == last[0] and done < total:
-                return
-            last[0] = step
-            stream.write(line + "\n")
+        stream.write(f"[{'#' * filled}{' ' * (width - filled)}] {done}/{total}  {time.perf_counter() - start:.0f} s\n")
         stream.flush()
     return draw
 

@@ -267,6 +267,22 @@ def test_the_progress_bar_draws_a_line_per_step_in_a_log():
     assert len(lines) == 5
 
 
+def test_the_progress_bar_on_a_terminal_is_a_tqdm_bar_ending_at_the_total():
+    """On a terminal the sweep's progress is drawn by tqdm (the library the other commands' bars
+    use): its last state shows every point done."""
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    stream = Terminal()
+    draw = progress_bar(stream)
+    for done in range(5):
+        draw(done, 4)
+    text = stream.getvalue()
+    assert "\r" in text and "4/4" in text.split("\r")[-1] and "[#" not in text
+
+
 @pytest.mark.parametrize(
     "args, message",
     [
