@@ -48,10 +48,15 @@ class StageTimer:
         self.totals: dict[str, float] = defaultdict(float)
         self.order: list[str] = []
         self._stage: str | None = None
+        self._family = ""
         self._since = time.perf_counter()
 
     def __call__(self, stage: str, done: int | None = None, total: int | None = None) -> None:
+        if stage.startswith("candidate"):
+            self._family = stage.split("the ", 1)[-1].split()[0]
         group = stage_group(stage)
+        if group.startswith("sound rule"):
+            group = f"{self._family}: {group}"
         if group != self._stage:
             self._switch(group)
 
@@ -83,6 +88,12 @@ def run(params, mu: float):
 def describe(cert) -> str:
     lines = [f"  certified={cert.certified} function={cert.function} A={cert.bound:.6g} "
              f"lambda0={cert.start_region:.6g}"]
+    design = getattr(cert.lyapunov, "design", None)
+    if design is not None:
+        res = cert.result
+        lines.append(f"  design {design!r}, A requested {res.A_requested:.6g}, step 3 {res.A_step3:.6g}, "
+                     f"level {res.level:.6g}, final check {res.check_evaluations} evaluations of W'")
+        lines.append("  tried " + ", ".join(f"({lam:.4g}, {A:.4g}, {ok})" for lam, A, ok in design.tried))
     for c in cert.candidates:
         reach = ", ".join(f"{v:.4g}" for v in c.start_set)
         lines.append(f"    {c.function:9s}: certified={c.certified} A={c.bound:.6g} lambda0={c.start_region:.6g} "

@@ -562,10 +562,12 @@ SHELL_LEVEL_MARGIN = 1e-3
 def _inner_radius(sys, psi, A, level, scales, dirs, common, n_radii, n_bisect, free) -> float:
     """The largest radius (at most ``A``) whose ball lies in ``{W(psi, .) < level}`` at every
     azimuth of the period: :func:`_start_radii` with the azimuth free in the searches (a scan of
-    ``n_radii`` spheres, then ``n_bisect`` bisection steps), less 0.1 % for the search's error."""
+    ``n_radii`` spheres, then ``n_bisect`` bisection steps), less 0.1 % for the search's error.
+    Only each sphere's verdict ``sup W >= level`` matters: a search stops at the first value
+    above the level (``stop_above``), the verdict of the full search."""
     def top(radius):
         return float(sphere_extremum(sys.w, psi, radius, scales, dirs, per_psi=False, free_psi=free,
-                                     **common).value[0])
+                                     stop_above=level, **common).value[0])
 
     radii = A * np.arange(1, n_radii + 1) / n_radii
     lo, hi = 0.0, None
