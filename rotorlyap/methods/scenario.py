@@ -252,7 +252,7 @@ def monomial_basis(f: Function, scales, degrees: Sequence[int] = (2,), *, harmon
         h, _ = waves_of(psi)
         if quadratic:  # sum_h h_h(psi) y^T S_h y
             Sy = (y @ forms(c)).reshape(-1, n_waves, n)
-            return np.einsum("ihj,ij,ih->i", Sy, y, h)
+            return np.einsum("ih,ih->i", np.einsum("ihj,ij->ih", Sy, y), h)
         m = monomials(powers(y))
         C = np.asarray(c, dtype=float).reshape(n_waves, n_mono)
         return np.einsum("ij,ij->i", m @ C.T, h)
@@ -265,8 +265,8 @@ def monomial_basis(f: Function, scales, degrees: Sequence[int] = (2,), *, harmon
             y = x / a
             fy = np.asarray(f(psi, x), dtype=float) / a
             Sy = (y @ forms(c)).reshape(-1, n_waves, n)
-            return (2.0 * np.einsum("ihj,ij,ih->i", Sy, fy, h)
-                    + (np.einsum("ihj,ij,ih->i", Sy, y, dh) if harmonics else 0.0))
+            rate = 2.0 * np.einsum("ih,ih->i", np.einsum("ihj,ij->ih", Sy, fy), h)
+            return rate + np.einsum("ih,ih->i", np.einsum("ihj,ij->ih", Sy, y), dh) if harmonics else rate
         m, grad_dot_f = monomials_and_rates(psi, x)
         C = np.asarray(c, dtype=float).reshape(n_waves, n_mono)
         return np.einsum("ij,ij->i", grad_dot_f @ C.T, h) + np.einsum("ij,ij->i", m @ C.T, dh)
