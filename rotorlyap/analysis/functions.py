@@ -255,6 +255,19 @@ class EnergyFunction:
         xi, ps, dxi = self._steady_rows(pf, rates=True)
         return compiled.energy_rate(b, b.kernel, pf, xf, xi, dxi, ps, self.steady.is_constant).reshape(shape)
 
+    def dW_and_f(self, psi: ArrayLike, x: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """``(W', f)`` at the states ``x`` (2-d, (m, 6)): :meth:`dW` and the disturbed right-hand
+        side :meth:`f`, from one compiled kernel where the blade has the block kernels (the
+        accelerations ``W'`` needs are ``f``'s), else the two calls. For functions built on this
+        one whose other terms need ``f`` too (the augmented energy's quadratic forms)."""
+        b = self.blade
+        if b.kernel is None or not b.kernel.block:
+            return self.dW(psi, x), self.f(psi, x)
+        pf, xf, shape = flatten_states(psi, x)
+        xi, ps, dxi = self._steady_rows(pf, rates=True)
+        dw, fx = compiled.energy_rate_and_rhs(b, b.kernel, pf, xf, xi, dxi, ps, self.steady.is_constant)
+        return dw.reshape(shape), fx.reshape(shape + (6,))
+
     def _steady_rows(self, pf: FloatArray, rates: bool = False):
         """``xi``, the potential terms at its hinge angles and (``rates``) ``xi'``, one row for a
         constant steady motion without cyclic pitch, else one row per azimuth of ``pf`` (each

@@ -66,6 +66,9 @@ class Basis:
         ``values(psi (m,), x (m, n)) -> (m, k)``: the ``phi_j``.
     rates : callable
         ``rates(psi (m,), x (m, n)) -> (m, k)``: ``phi_j' = d phi_j / d psi + grad phi_j . f``.
+    rate_with_f : callable, optional
+        ``rate_with_f(psi, x, c, f) -> (m,)``: ``rate_of`` given the right-hand side ``f(psi, x)``
+        at the states (computed by the caller with something else it needed it for).
     value_of, rate_of : callable, optional
         ``value_of(psi, x, c) -> (m,)``: ``sum_j c_j phi_j`` computed without the ``(m, k)``
         matrix (and ``rate_of`` the same of the rates): what a designed function's ``W`` and
@@ -79,6 +82,7 @@ class Basis:
     rates: Function
     value_of: Combination | None = field(default=None, compare=False)
     rate_of: Combination | None = field(default=None, compare=False)
+    rate_with_f: Callable | None = field(default=None, compare=False)
 
     @property
     def size(self) -> int:
@@ -257,13 +261,13 @@ def monomial_basis(f: Function, scales, degrees: Sequence[int] = (2,), *, harmon
         C = np.asarray(c, dtype=float).reshape(n_waves, n_mono)
         return np.einsum("ij,ij->i", m @ C.T, h)
 
-    def rate_of(psi, x, c):
+    def rate_of(psi, x, c, fx=None):
         psi = np.broadcast_to(np.asarray(psi, dtype=float), (np.shape(x)[0],))
         h, dh = waves_of(psi)
         if quadratic:  # sum_h [h_h 2 (S_h y) . f / a + h_h' y^T S_h y]
             x = np.asarray(x, dtype=float)
             y = x / a
-            fy = np.asarray(f(psi, x), dtype=float) / a
+            fy = np.asarray(f(psi, x) if fx is None else fx, dtype=float) / a
             Sy = (y @ forms(c)).reshape(-1, n_waves, n)
             rate = 2.0 * np.einsum("ih,ih->i", np.einsum("ihj,ij->ih", Sy, fy), h)
             return rate + np.einsum("ih,ih->i", np.einsum("ihj,ij->ih", Sy, y), dh) if harmonics else rate
@@ -271,7 +275,8 @@ def monomial_basis(f: Function, scales, degrees: Sequence[int] = (2,), *, harmon
         C = np.asarray(c, dtype=float).reshape(n_waves, n_mono)
         return np.einsum("ij,ij->i", grad_dot_f @ C.T, h) + np.einsum("ij,ij->i", m @ C.T, dh)
 
-    return Basis(names=all_names, values=values, rates=rates, value_of=value_of, rate_of=rate_of)
+    return Basis(names=all_names, values=values, rates=rates, value_of=value_of, rate_of=rate_of,
+                 rate_with_f=rate_of if quadratic else None)
 
 
 @dataclass(frozen=True)
