@@ -278,9 +278,13 @@ class EnergyFunction:
             xi, dxi, ps = self.steady.state[None], np.zeros((1, 6)), self._steady_block(pf[:1])[2].T
         else:
             pu, inverse = np.unique(pf, return_inverse=True)
-            xi_u, dxi_u = (np.broadcast_to(a, (pu.size, 6)) for a in self.steady_at(pu))
+            if constant:
+                xi_u, dxi_u = np.broadcast_to(self.steady.state, (pu.size, 6)), np.zeros((1, 6))
+            else:  # xi' only where asked for (W itself does not need it)
+                xi_u = np.asarray(self.steady.xi_function(pu), dtype=np.float64)
+                dxi_u = np.asarray(self.steady.dxi_function(pu), dtype=np.float64)[inverse] if rates else None
             ps = b.potential_terms(pu, np.ascontiguousarray(xi_u[:, :3].T)).T[inverse]
-            xi, dxi = (xi_u[:1], dxi_u[:1]) if constant else (xi_u[inverse], dxi_u[inverse])
+            xi, dxi = (xi_u[:1], dxi_u[:1]) if constant else (xi_u[inverse], dxi_u)
         return (xi, ps, dxi) if rates else (xi, ps)
 
     def _dw_block(self, psi: FloatArray, xc: FloatArray) -> FloatArray:
