@@ -114,7 +114,8 @@ class Basis:
             names=first.names + second.names,
             values=lambda psi, x: np.hstack([first.values(psi, x), second.values(psi, x)]),
             rates=lambda psi, x: np.hstack([first.rates(psi, x), second.rates(psi, x)]),
-            value_of=lambda psi, x, c: first.combined_values(psi, x, c[:k]) + second.combined_values(psi, x, c[k:]),
+            value_of=lambda psi, x, c: (first.combined_values(psi, x, c[:k])
+                                        + second.combined_values(psi, x, c[k:])),
             rate_of=lambda psi, x, c: first.combined_rates(psi, x, c[:k]) + second.combined_rates(psi, x, c[k:]),
         )
 
@@ -611,8 +612,9 @@ class _Program:
         h = self.model
         rows = self.A[new]
         n_rows, n_cols = rows.shape
-        h.addRows(n_rows, np.full(n_rows, -inf), self.b[new].astype(float), n_rows * n_cols,
-                  (np.arange(n_rows) * n_cols).astype(np.int32), np.tile(np.arange(n_cols, dtype=np.int32), n_rows),
+        starts = (np.arange(n_rows) * n_cols).astype(np.int32)
+        columns = np.tile(np.arange(n_cols, dtype=np.int32), n_rows)
+        h.addRows(n_rows, np.full(n_rows, -inf), self.b[new].astype(float), n_rows * n_cols, starts, columns,
                   np.ascontiguousarray(rows, dtype=float).reshape(-1))
         h.run()
         if h.modelStatusToString(h.getModelStatus()) != "Optimal":
