@@ -2,9 +2,12 @@
 
 Run: ``python benchmarks/bench_certify.py [--mu 0 0.1] [--repeat 1] [--profile FILE]``.
 
-"Warm" here means: the package imported, the numba kernels compiled and the caches that a
-first call fills (the hover trim, the sphere directions) filled, by one hover ``certify`` of the
-same blade before anything is timed. Each timed call is then the default ``certify`` of the
+"Warm" here means: the package imported, the numba kernels loaded and the caches that a first
+call fills (the sphere directions, ...) filled, by one ``certify`` of the Table I forward C.G. in
+hover before anything is timed. The kernels that only forward flight uses are loaded from
+numba's disk cache (``__pycache__``) inside the first timed call at mu > 0; on a machine (or a
+checkout) where they were never compiled, that first call compiles them too (about 25 s, measured
+2026-12-05): run the benchmark twice, or use ``--repeat 2``. Each timed call is then the default ``certify`` of the
 trimmed Table I helicopter (forward C.G., ``BladeParameters.flight_case("forward")``) at the
 given advance ratio, from the trim to the start set; its stages are timed by listening to
 :mod:`rotorlyap.progress` (a stage lasts from its first report to the next stage's first report,
@@ -34,8 +37,8 @@ def stage_group(stage: str) -> str:
         return "design (thorough rounds)" if "thorough" in stage else "design (search rounds)"
     if stage.startswith("sound rule: final check"):
         return "sound rule: final check"
-    if stage.startswith("sound rule: the band"):
-        return "sound rule: band bisection"
+    if stage.startswith("sound rule: the band"):  # the bound's tests: level, shell, band searches
+        return "sound rule: band tests of the bound"
     if stage.startswith("candidate"):
         return "candidate setup: " + stage.split("the ", 1)[-1]
     return re.sub(r"[\d.]+", "#", stage)
