@@ -318,7 +318,7 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
                    help="quasi-random directions per sphere")
     c.add_argument("--function", choices=FUNCTION_CHOICES, default="auto",
                    help="the Liapunov function: auto (default: the quadratic function and the augmented "
-                        "energy, the larger certificate; a minute or more), quadratic (seconds, the linear "
+                        "energy, the larger certificate; tens of seconds), quadratic (seconds, the linear "
                         "range), energy (the augmented energy), polynomial")
     c.add_argument("--verify", action="store_true",
                    help="also prove the certificate by ball arithmetic (rotorlyap.certify(verify=True)): "
@@ -354,7 +354,7 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
     s.add_argument("--out", type=_table_path, required=True, help="the table: FILE.csv or FILE.json")
     s.add_argument("--function", choices=FUNCTION_CHOICES, default="quadratic",
                    help="the Liapunov function of every point: quadratic (default: seconds a point), auto "
-                        "(the larger of the quadratic function and the augmented energy: a minute or more a "
+                        "(the larger of the quadratic function and the augmented energy: tens of seconds a "
                         "point), energy, polynomial")
     s.add_argument("--workers", type=_int_at_least("--workers", 1), default=None,
                    help="processes (or local Dask workers); default every core; 1 runs in this process")

@@ -141,6 +141,31 @@ def test_block_kernel_equals_one_state_kernel(label, changes, mu):
         np.testing.assert_array_equal(c[-1], b[-1])
 
 
+@pytest.mark.parametrize("steady", ["hover", "periodic"])
+def test_block_energy_value_kernel_gives_the_bits_of_the_one_state_kernel(steady):
+    """The energy function's W by blocks (the mass matrix of the vectorised rhs_terms block code)
+    equals the one-state kernel bit for bit, wherever a state falls in a block."""
+    params = BladeParameters.table_i("forward")
+    mu = 0.0 if steady == "hover" else 0.15
+    blade = Blade(params, mu)
+    assert blade.kernel is not None and blade.kernel.block
+    fun = energy_function(blade, blade.equilibrium() if steady == "hover"
+                          else tabulate_motion(periodic_motion(params, mu, n_points=32)))
+    rng = np.random.default_rng(5)
+    psi = rng.uniform(0.0, 2.0 * np.pi, 700)
+    x = rng.normal(scale=0.3, size=(psi.size, 6))
+    xi, ps = fun._steady_rows(psi)
+    d = blade.kernel
+    args = (psi, x, np.ascontiguousarray(xi), np.ascontiguousarray(ps), compiled._controls(blade), d.P, d.scalars)
+    one, block, split = np.empty(psi.size), np.empty(psi.size), np.empty(psi.size)
+    compiled._energy_value_range(*args, one, 0, psi.size)
+    compiled._energy_value_block_range(*args, block, 0, psi.size)
+    for start, stop in ((0, 3), (3, 200), (200, psi.size)):
+        compiled._energy_value_block_range(*args, split, start, stop)
+    np.testing.assert_array_equal(block, one)
+    np.testing.assert_array_equal(split, one)
+
+
 def test_threaded_batches_give_the_bits_of_one_thread(monkeypatch):
     """A batch of at least PARALLEL_MIN_STATES states runs in chunks on the kernels' thread pool
     (rotorlyap.model.compiled._run, here with two threads whatever NUMBA_NUM_THREADS says);

@@ -13,10 +13,10 @@ The function (``function=``): ``"quadratic"``, the quadratic form of the lineari
 (:func:`rotorlyap.analysis.functions.quadratic_function`: seconds, the linear range);
 ``"energy"`` or ``"polynomial"``, a function designed for the nonlinear range
 (:func:`rotorlyap.analysis.nonlinear_functions.designed_function`: the augmented energy, or a
-polynomial; a minute or more); ``"auto"`` (the default), the quadratic function and the
-augmented energy both, and the certificate with the larger start region, so that a user gets
-the largest certificate without choosing (where the linearised blade is unstable only the
-quadratic function is tried: it says why nothing can be certified).
+polynomial; tens of seconds, ``benchmarks/bench_certify.py``); ``"auto"`` (the default), the
+quadratic function and the augmented energy both, and the certificate with the larger start
+region, so that a user gets the largest certificate without choosing (where the linearised
+blade is unstable only the quadratic function is tried: it says why nothing can be certified).
 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
 message says so. With ``verify=True`` the same function is also *proved* by ball arithmetic

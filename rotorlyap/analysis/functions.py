@@ -255,6 +255,19 @@ class EnergyFunction:
         xi, ps, dxi = self._steady_rows(pf, rates=True)
         return compiled.energy_rate(b, b.kernel, pf, xf, xi, dxi, ps, self.steady.is_constant).reshape(shape)
 
+    def dW_and_f(self, psi: ArrayLike, x: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """``(W', f)`` at the states ``x`` (2-d, (m, 6)): :meth:`dW` and the disturbed right-hand
+        side :meth:`f`, from one compiled kernel where the blade has the block kernels (the
+        accelerations ``W'`` needs are ``f``'s), else the two calls. For functions built on this
+        one whose other terms need ``f`` too (the augmented energy's quadratic forms)."""
+        b = self.blade
+        if b.kernel is None or not b.kernel.block:
+            return self.dW(psi, x), self.f(psi, x)
+        pf, xf, shape = flatten_states(psi, x)
+        xi, ps, dxi = self._steady_rows(pf, rates=True)
+        dw, fx = compiled.energy_rate_and_rhs(b, b.kernel, pf, xf, xi, dxi, ps, self.steady.is_constant)
+        return dw.reshape(shape), fx.reshape(shape + (6,))
+
     def _steady_rows(self, pf: FloatArray, rates: bool = False):
         """``xi``, the potential terms at its hinge angles and (``rates``) ``xi'``, one row for a
         constant steady motion without cyclic pitch, else one row per azimuth of ``pf`` (each
@@ -265,9 +278,13 @@ class EnergyFunction:
             xi, dxi, ps = self.steady.state[None], np.zeros((1, 6)), self._steady_block(pf[:1])[2].T
         else:
             pu, inverse = np.unique(pf, return_inverse=True)
-            xi_u, dxi_u = (np.broadcast_to(a, (pu.size, 6)) for a in self.steady_at(pu))
+            if constant:
+                xi_u, dxi_u = np.broadcast_to(self.steady.state, (pu.size, 6)), np.zeros((1, 6))
+            else:  # xi' only where asked for (W itself does not need it)
+                xi_u = np.asarray(self.steady.xi_function(pu), dtype=np.float64)
+                dxi_u = np.asarray(self.steady.dxi_function(pu), dtype=np.float64)[inverse] if rates else None
             ps = b.potential_terms(pu, np.ascontiguousarray(xi_u[:, :3].T)).T[inverse]
-            xi, dxi = (xi_u[:1], dxi_u[:1]) if constant else (xi_u[inverse], dxi_u[inverse])
+            xi, dxi = (xi_u[:1], dxi_u[:1]) if constant else (xi_u[inverse], dxi_u)
         return (xi, ps, dxi) if rates else (xi, ps)
 
     def _dw_block(self, psi: FloatArray, xc: FloatArray) -> FloatArray:

@@ -43,7 +43,7 @@ them in the tests.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -168,7 +168,15 @@ def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | Non
     energy = Basis(("energy",), lambda psi, x: (fun.W(psi, x) / size)[:, None],
                    lambda psi, x: (fun.dW(psi, x) / size)[:, None])
     k = _harmonics(blade, steady, harmonics)
-    return energy + monomial_basis(fun.f, a, (2,), harmonics=k, names=STATE_NAMES)
+    forms = monomial_basis(fun.f, a, (2,), harmonics=k, names=STATE_NAMES)
+
+    def rate_of(psi, x, c):  # the energy's W' and the f its quadratic forms need, from one kernel
+        x = np.asarray(x, dtype=float)
+        psi = np.broadcast_to(np.asarray(psi, dtype=float), (x.shape[0],))
+        dw, fx = fun.dW_and_f(psi, x)
+        return c[0] * (dw / size) + forms.rate_with_f(psi, x, c[1:], fx)
+
+    return replace(energy + forms, rate_of=rate_of)
 
 
 def polynomial_basis(blade: Blade, steady=None, *, scales=None, degrees=(2, 3, 4),

@@ -599,7 +599,7 @@ def sweep(params: BladeParameters, grid: Mapping[str, Sequence[Any] | Any], *, n
     function : str
         The Liapunov function of every point (:data:`rotorlyap.analysis.certify.FUNCTIONS`).
         Default ``"quadratic"``, seconds a point, where :func:`~rotorlyap.analysis.certify.certify`
-        defaults to ``"auto"`` (a minute or more a point, for the largest certificate).
+        defaults to ``"auto"`` (tens of seconds a point, for the largest certificate).
     workers : int, optional
         Processes (or Dask workers of a local cluster); default every core (:func:`available_cores`);
         1 runs in this process.

@@ -521,16 +521,23 @@ def technical_stability(
 
 def _start_radii(sys, psi, A_used, level, scales, dirs, common, n_radii, n_bisect) -> np.ndarray:
     """Step 5: at each azimuth the largest radius (at most ``A_used``) whose ball has
-    ``sup W < level``: a scan of ``n_radii`` spheres, then ``n_bisect`` bisection steps."""
+    ``sup W < level``: a scan of ``n_radii`` spheres, then ``n_bisect`` bisection steps.
+
+    Only each sphere's verdict ``sup W < level`` matters, so an azimuth's scan ends at its first
+    sphere that reaches the level, and every search stops refining an azimuth once a value
+    reaches the level (``settle_at`` of :func:`~rotorlyap.methods.sampling.sphere_extremum`):
+    the verdicts, and so the radii, of the full searches of every sphere, for about half their
+    work (the spheres beyond the crossing and the searches that cross are most of it)."""
     n_psi = psi.size
     radii = A_used * np.arange(1, n_radii + 1) / n_radii
-    sup_w = np.empty((n_psi, n_radii))
+    first = np.full(n_psi, n_radii)  # the first sphere of each azimuth whose search reaches the level
     for i, radius in enumerate(radii):
+        scanning = np.flatnonzero(first == n_radii)
+        if scanning.size == 0:
+            break
         report("sound rule: start radii", i + 1, n_radii + n_bisect)
-        sup_w[:, i] = sphere_extremum(sys.w, psi, radius, scales, dirs, **common).value
-    running = np.maximum.accumulate(sup_w, axis=1)
-    reach = running >= level
-    first = np.where(reach.any(axis=1), np.argmax(reach, axis=1), n_radii)
+        top = sphere_extremum(sys.w, psi[scanning], radius, scales, dirs, settle_at=level, **common).value
+        first[scanning[top >= level]] = i
     lo = np.where(first > 0, radii[np.maximum(first - 1, 0)], 0.0)
     hi = np.where(first < n_radii, radii[np.minimum(first, n_radii - 1)], A_used)
     todo = first < n_radii
@@ -540,7 +547,7 @@ def _start_radii(sys, psi, A_used, level, scales, dirs, common, n_radii, n_bisec
         report("sound rule: start radii", n_radii + k + 1, n_radii + n_bisect)
         mid = 0.5 * (lo + hi)
         s = np.full(n_psi, np.inf)
-        s[todo] = sphere_extremum(sys.w, psi[todo], mid[todo], scales, dirs, **common).value
+        s[todo] = sphere_extremum(sys.w, psi[todo], mid[todo], scales, dirs, settle_at=level, **common).value
         below = s < level
         lo = np.where(todo & below, mid, lo)
         hi = np.where(todo & ~below, mid, hi)
@@ -555,10 +562,12 @@ SHELL_LEVEL_MARGIN = 1e-3
 def _inner_radius(sys, psi, A, level, scales, dirs, common, n_radii, n_bisect, free) -> float:
     """The largest radius (at most ``A``) whose ball lies in ``{W(psi, .) < level}`` at every
     azimuth of the period: :func:`_start_radii` with the azimuth free in the searches (a scan of
-    ``n_radii`` spheres, then ``n_bisect`` bisection steps), less 0.1 % for the search's error."""
+    ``n_radii`` spheres, then ``n_bisect`` bisection steps), less 0.1 % for the search's error.
+    Only each sphere's verdict ``sup W >= level`` matters: a search stops at the first value
+    above the level (``stop_above``), the verdict of the full search."""
     def top(radius):
         return float(sphere_extremum(sys.w, psi, radius, scales, dirs, per_psi=False, free_psi=free,
-                                     **common).value[0])
+                                     stop_above=level, **common).value[0])
 
     radii = A * np.arange(1, n_radii + 1) / n_radii
     lo, hi = 0.0, None
@@ -954,10 +963,18 @@ class _Level:
         self.w_common = dict(common, n_refine=max(64, common["n_refine"]), n_iter=max(200, common["n_iter"])) \
             if shell else common
         self.inner_radii = {}  # shell: (r, alpha) -> the largest ball in {W < alpha} over the period
+        self.sphere_minima, self.sizes = {}, {}  # r -> the searches' results (each sphere searched once)
 
     def sphere_min(self, r: float) -> float:
         """The smallest ``W`` found on the sphere ``||x|| = r`` over the period (closed form for a
-        quadratic ``W``)."""
+        quadratic ``W``; a sphere searched before gives its result again: the search is
+        deterministic, and the sound rule's final check asks for the level of the bound its
+        bisection tested)."""
+        if r not in self.sphere_minima:
+            self.sphere_minima[r] = self._sphere_min(r)
+        return self.sphere_minima[r]
+
+    def _sphere_min(self, r: float) -> float:
         sys, psi, scales, dirs, free = self.sys, self.psi, self.scales, self.dirs, self.free
         if self.w_matrix is not None:
             return r * r * self.unit_min
@@ -980,12 +997,17 @@ class _Level:
         return found * (1.0 - SHELL_LEVEL_MARGIN) if self.shell and self.w_matrix is None else found
 
     def size(self, r: float) -> float:
-        """The largest ``|W|`` found on the sphere ``||x|| = r`` (the margin's scale)."""
+        """The largest ``|W|`` found on the sphere ``||x|| = r`` (the margin's scale; each sphere
+        searched once)."""
         if self.w_matrix is not None:
             return r * r * self.unit_size
+        if r in self.sizes:
+            return self.sizes[r]
         sys = self.sys
-        return float(sphere_extremum(_like(sys.w, lambda p, x: np.abs(sys.w(p, x))), self.psi, r, self.scales,
-                                     self.dirs, per_psi=False, n_refine=1, n_iter=0, period=self.period).value[0])
+        self.sizes[r] = float(sphere_extremum(_like(sys.w, lambda p, x: np.abs(sys.w(p, x))), self.psi, r,
+                                              self.scales, self.dirs, per_psi=False, n_refine=1, n_iter=0,
+                                              period=self.period).value[0])
+        return self.sizes[r]
 
     def inner(self, r: float, alpha: float) -> float | None:
         """With the shell: the largest ball in ``{W < alpha}`` at every azimuth (None without)."""
@@ -1051,18 +1073,34 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
     levels = _Level(sys, w_matrix, psi, period, scales, dirs, common, free=free, shell=shell,
                     n_radii=n_radii, n_bisect=n_bisect)
     alpha_of, w_size, inner_of, w_common = levels.alpha, levels.size, levels.inner, levels.w_common
+    dirs_2 = _second_directions(dirs, n)
+
+    searched = {}  # (r, alpha, options) -> (result, evaluations it took): each search run once
 
     def band(r: float, alpha: float, stop: float | None, per_psi: bool = False, starts: str = "levels",
              directions=None, n_lbfgs: int = 64):
-        return band_max_dw(sys, None, None, alpha, r, scales=scales, period=period, psi=psi,
-                           w_matrix=w_matrix, per_psi=per_psi, autonomous=autonomous,
-                           inner=inner_of(r, alpha),
-                           directions=dirs if directions is None else directions,
-                           n_levels=n_shells, stop_above=stop, n_refine=common["n_refine"],
-                           n_iter=common["n_iter"], starts=starts, n_lbfgs=n_lbfgs,
-                           psi_free=psi_free)
+        """:func:`band_max_dw` on the band of ``r`` and ``alpha``. The searches are deterministic,
+        so one asked again with the same arguments (the final check repeats the two searches the
+        bound's own test ran at the same bound and level, and the map of ``W'`` per azimuth is
+        the final check's second search) is not run again: its result is returned and the
+        evaluations it took are counted again, as the states it examined belong to the check."""
+        key = (float(r), float(alpha), stop, per_psi, starts, 1 if directions is dirs_2 else 0, n_lbfgs)
+        if key not in searched:
+            before = (sys.count, sys.count_dw)
+            ext = band_max_dw(sys, None, None, alpha, r, scales=scales, period=period, psi=psi,
+                              w_matrix=w_matrix, per_psi=per_psi, autonomous=autonomous,
+                              inner=inner_of(r, alpha),
+                              directions=dirs if directions is None else directions,
+                              n_levels=n_shells, stop_above=stop, n_refine=common["n_refine"],
+                              n_iter=common["n_iter"], starts=starts, n_lbfgs=n_lbfgs,
+                              psi_free=psi_free)
+            searched[key] = (ext, sys.count - before[0], sys.count_dw - before[1])
+            return ext
+        ext, count, count_dw = searched[key]
+        sys.count += count
+        sys.count_dw += count_dw
+        return ext
 
-    dirs_2 = _second_directions(dirs, n)
     failed_first = [0]  # the thorough check's search that failed last (passes)
 
     def passes(r: float, thorough: bool = False):
@@ -1083,6 +1121,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
 
     # W' on the sphere itself (a part of the band): the paper's step 3 bounds A from above
     # the margin relative to the size of W on each sphere, as on the band
+    report("sound rule: W' on the sphere (step 3)")
     A1, step3 = _step3(sys, A, psi, scales, dirs, free, common, lambda r: -margin * w_size(r),
                        n_radii, n_bisect)
     first_worst = step3
@@ -1148,6 +1187,7 @@ def _sound(sys, w_matrix, A, psi, period, scales, dirs, common, *, n_radii, n_sh
 
     c = alpha
     # the map of W' on the band at each start azimuth (a diagnostic: where (h) is tightest)
+    report("sound rule: the map of W' on the band per azimuth")
     ext = band(A_used, c, stop=None, per_psi=True)
     # start regions: the largest ball inside {W(psi_j, .) < c}
     if w_matrix is not None:

@@ -694,52 +694,32 @@ def _rhs_block_range(psi, z, ctrl, P, sc, st, tab, out, start, stop):
 
 
 @_jit(error_model="numpy")
-def _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, start, stop):
-    """:func:`_energy_rate_range` by blocks of _B states (the states innermost, vectorised)."""
+def _energy_value_block_range(psi, x, xi, ps, ctrl, P, sc, out, start, stop):
+    """:func:`_energy_value_range` with the mass matrix by blocks of _B states (the generated
+    ``rhs_terms`` block code, vectorised; the same expressions) and the potential state by state:
+    the scalar kernel spent two thirds of its time on ``rhs_terms``, of which ``W`` needs six
+    rows (measured on the trimmed helicopter at mu = 0.1: 1.34 us a state, one thread)."""
     W = np.empty(_ROWS * _B)
+    pt = np.empty(14)
     cyclic = sc[_CYCLIC] != 0.0
-    om = sc[_OMEGA]
-    om2 = om * om
+    om2 = sc[_OMEGA] * sc[_OMEGA]
     one = xi.shape[0] == 1
     one_ps = ps.shape[0] == 1
-    c1 = ctrl[1]
-    c2 = ctrl[2]
     for i0 in range(start, stop, _B):
         n = min(_B, stop - i0)
         for i in range(n):
-            g = i0 + i
-            j = 0 if one else g
-            k = 0 if one_ps else g
-            p = psi[g]
-            cp = math.cos(p)
-            sp = math.sin(p)
-            W[_CPSI + i] = cp
-            W[_SPSI + i] = sp
-            W[_IN + 6 * _B + i] = ctrl[0] + ctrl[1] * cp + ctrl[2] * sp if cyclic else ctrl[0]
+            s_ = i0 + i
+            j = 0 if one else s_
+            W[_IN + 6 * _B + i] = _pitch(psi[s_], ctrl, cyclic)
             for c in range(6):
-                W[_IN + c * _B + i] = x[g, c] + xi[j, c]
-                W[_D + c * _B + i] = dxi[j, c]
-            for c in range(3):
-                W[_IN + (7 + c) * _B + i] = x[g, 3 + c]
-                W[_XQ + c * _B + i] = x[g, c]
-            for r in range(1, 14):
-                W[_PS + r * _B + i] = ps[k, r]
+                W[_IN + c * _B + i] = x[s_, c] + xi[j, c]
         _trig_rows(n, W)
-        _rhs_dw_terms_block(n, P, W)
-        _accelerations_block(n, W, sc, st, tab)
+        _rhs_terms_block(n, P, W)
         for i in range(n):
-            z3 = W[_IN + 3 * _B + i]
-            z4 = W[_IN + 4 * _B + i]
-            z5 = W[_IN + 5 * _B + i]
-            xr0 = W[_IN + 7 * _B + i]
-            xr1 = W[_IN + 8 * _B + i]
-            xr2 = W[_IN + 9 * _B + i]
-            d0 = W[_D + i]
-            d1 = W[_D + _B + i]
-            d2 = W[_D + 2 * _B + i]
-            g0 = W[_T + 42 * _B + i] + W[_T + 45 * _B + i] - W[_PS + _B + i]
-            g1 = W[_T + 43 * _B + i] + W[_T + 46 * _B + i] - W[_PS + 2 * _B + i]
-            g2 = W[_T + 44 * _B + i] + W[_T + 47 * _B + i] - W[_PS + 3 * _B + i]
+            s_ = i0 + i
+            k = 0 if one_ps else s_
+            _potential_terms_into(W[_IN + i], W[_IN + _B + i], W[_IN + 2 * _B + i], W[_IN + 6 * _B + i], P, pt)
+            xr0, xr1, xr2 = x[s_, 3], x[s_, 4], x[s_, 5]
             t0 = W[_T + i]
             t1 = W[_T + _B + i]
             t2 = W[_T + 2 * _B + i]
@@ -749,31 +729,119 @@ def _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant
             m0 = t0 * xr0 + t1 * xr1 + t2 * xr2
             m1 = t1 * xr0 + t3 * xr1 + t4 * xr2
             m2 = t2 * xr0 + t4 * xr1 + t5 * xr2
-            dW = (g0 * (z3 - d0) + g1 * (z4 - d1) + g2 * (z5 - d2)
-                  + om2 * (m0 * (W[_A0 + i] - W[_D + 3 * _B + i])
-                           + m1 * (W[_A1 + i] - W[_D + 4 * _B + i])
-                           + m2 * (W[_A2 + i] - W[_D + 5 * _B + i])))
-            xq0 = W[_XQ + i]
-            xq1 = W[_XQ + _B + i]
-            xq2 = W[_XQ + 2 * _B + i]
-            p4 = W[_PS + 4 * _B + i]
-            p5 = W[_PS + 5 * _B + i]
-            p6 = W[_PS + 6 * _B + i]
-            p7 = W[_PS + 7 * _B + i]
-            p8 = W[_PS + 8 * _B + i]
-            p9 = W[_PS + 9 * _B + i]
-            h0 = p4 * d0 + p5 * d1 + p6 * d2
-            h1 = p5 * d0 + p7 * d1 + p8 * d2
-            h2 = p6 * d0 + p8 * d1 + p9 * d2
-            dW_moving = dW + ((g0 * d0 + g1 * d1) + g2 * d2) - (h0 * xq0 + h1 * xq1 + h2 * xq2)
-            dW = dW if constant else dW_moving
-            dthc = -c1 * W[_SPSI + i] + c2 * W[_CPSI + i]
-            dW_cyclic = dW + dthc * (W[_T + 48 * _B + i] - W[_PS + 10 * _B + i]
-                                     - ((W[_PS + 11 * _B + i] * xq0 + W[_PS + 12 * _B + i] * xq1)
-                                        + W[_PS + 13 * _B + i] * xq2))
-            W[_DW + i] = dW_cyclic if cyclic else dW
+            kin = 0.5 * om2 * ((m0 * xr0 + m1 * xr1) + m2 * xr2)
+            out[s_] = kin + pt[0] - ps[k, 0] - ((ps[k, 1] * x[s_, 0] + ps[k, 2] * x[s_, 1]) + ps[k, 3] * x[s_, 2])
+
+
+@_jit(error_model="numpy")
+def _energy_rate_block(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, W, i0, n):
+    """The energy function's ``W'`` of the states ``i0 .. i0 + n - 1`` (``n <= _B``) into the row
+    ``_DW`` of the workspace ``W``, their accelerations in the rows ``_A0``-``_A2`` and the
+    steady motion's rates in the rows ``_D`` (the body of :func:`_energy_rate_block_range`)."""
+    cyclic = sc[_CYCLIC] != 0.0
+    om = sc[_OMEGA]
+    om2 = om * om
+    one = xi.shape[0] == 1
+    one_ps = ps.shape[0] == 1
+    c1 = ctrl[1]
+    c2 = ctrl[2]
+    for i in range(n):
+        g = i0 + i
+        j = 0 if one else g
+        k = 0 if one_ps else g
+        p = psi[g]
+        cp = math.cos(p)
+        sp = math.sin(p)
+        W[_CPSI + i] = cp
+        W[_SPSI + i] = sp
+        W[_IN + 6 * _B + i] = ctrl[0] + ctrl[1] * cp + ctrl[2] * sp if cyclic else ctrl[0]
+        for c in range(6):
+            W[_IN + c * _B + i] = x[g, c] + xi[j, c]
+            W[_D + c * _B + i] = dxi[j, c]
+        for c in range(3):
+            W[_IN + (7 + c) * _B + i] = x[g, 3 + c]
+            W[_XQ + c * _B + i] = x[g, c]
+        for r in range(1, 14):
+            W[_PS + r * _B + i] = ps[k, r]
+    _trig_rows(n, W)
+    _rhs_dw_terms_block(n, P, W)
+    _accelerations_block(n, W, sc, st, tab)
+    for i in range(n):
+        z3 = W[_IN + 3 * _B + i]
+        z4 = W[_IN + 4 * _B + i]
+        z5 = W[_IN + 5 * _B + i]
+        xr0 = W[_IN + 7 * _B + i]
+        xr1 = W[_IN + 8 * _B + i]
+        xr2 = W[_IN + 9 * _B + i]
+        d0 = W[_D + i]
+        d1 = W[_D + _B + i]
+        d2 = W[_D + 2 * _B + i]
+        g0 = W[_T + 42 * _B + i] + W[_T + 45 * _B + i] - W[_PS + _B + i]
+        g1 = W[_T + 43 * _B + i] + W[_T + 46 * _B + i] - W[_PS + 2 * _B + i]
+        g2 = W[_T + 44 * _B + i] + W[_T + 47 * _B + i] - W[_PS + 3 * _B + i]
+        t0 = W[_T + i]
+        t1 = W[_T + _B + i]
+        t2 = W[_T + 2 * _B + i]
+        t3 = W[_T + 3 * _B + i]
+        t4 = W[_T + 4 * _B + i]
+        t5 = W[_T + 5 * _B + i]
+        m0 = t0 * xr0 + t1 * xr1 + t2 * xr2
+        m1 = t1 * xr0 + t3 * xr1 + t4 * xr2
+        m2 = t2 * xr0 + t4 * xr1 + t5 * xr2
+        dW = (g0 * (z3 - d0) + g1 * (z4 - d1) + g2 * (z5 - d2)
+              + om2 * (m0 * (W[_A0 + i] - W[_D + 3 * _B + i])
+                       + m1 * (W[_A1 + i] - W[_D + 4 * _B + i])
+                       + m2 * (W[_A2 + i] - W[_D + 5 * _B + i])))
+        xq0 = W[_XQ + i]
+        xq1 = W[_XQ + _B + i]
+        xq2 = W[_XQ + 2 * _B + i]
+        p4 = W[_PS + 4 * _B + i]
+        p5 = W[_PS + 5 * _B + i]
+        p6 = W[_PS + 6 * _B + i]
+        p7 = W[_PS + 7 * _B + i]
+        p8 = W[_PS + 8 * _B + i]
+        p9 = W[_PS + 9 * _B + i]
+        h0 = p4 * d0 + p5 * d1 + p6 * d2
+        h1 = p5 * d0 + p7 * d1 + p8 * d2
+        h2 = p6 * d0 + p8 * d1 + p9 * d2
+        dW_moving = dW + ((g0 * d0 + g1 * d1) + g2 * d2) - (h0 * xq0 + h1 * xq1 + h2 * xq2)
+        dW = dW if constant else dW_moving
+        dthc = -c1 * W[_SPSI + i] + c2 * W[_CPSI + i]
+        dW_cyclic = dW + dthc * (W[_T + 48 * _B + i] - W[_PS + 10 * _B + i]
+                                 - ((W[_PS + 11 * _B + i] * xq0 + W[_PS + 12 * _B + i] * xq1)
+                                    + W[_PS + 13 * _B + i] * xq2))
+        W[_DW + i] = dW_cyclic if cyclic else dW
+
+
+@_jit(error_model="numpy")
+def _energy_rate_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, start, stop):
+    """:func:`_energy_rate_range` by blocks of _B states (the states innermost, vectorised)."""
+    W = np.empty(_ROWS * _B)
+    for i0 in range(start, stop, _B):
+        n = min(_B, stop - i0)
+        _energy_rate_block(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, W, i0, n)
         for i in range(n):
             out[i0 + i] = W[_DW + i]
+
+
+@_jit(error_model="numpy")
+def _energy_rate_rhs_block_range(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, out, f_out, start, stop):
+    """:func:`_energy_rate_block_range` and the disturbed right-hand side ``f = h(psi, xi + x) - xi'``
+    it computes on the way (into ``f_out``, (m, 6)): the rates of the designed functions' quadratic
+    forms need ``f`` at the same states, which a second kernel call computed again."""
+    W = np.empty(_ROWS * _B)
+    for i0 in range(start, stop, _B):
+        n = min(_B, stop - i0)
+        _energy_rate_block(psi, x, xi, dxi, ps, ctrl, P, sc, st, tab, constant, W, i0, n)
+        for i in range(n):
+            g = i0 + i
+            out[g] = W[_DW + i]
+            f_out[g, 0] = W[_IN + 3 * _B + i] - W[_D + i]
+            f_out[g, 1] = W[_IN + 4 * _B + i] - W[_D + _B + i]
+            f_out[g, 2] = W[_IN + 5 * _B + i] - W[_D + 2 * _B + i]
+            f_out[g, 3] = W[_A0 + i] - W[_D + 3 * _B + i]
+            f_out[g, 4] = W[_A1 + i] - W[_D + 4 * _B + i]
+            f_out[g, 5] = W[_A2 + i] - W[_D + 5 * _B + i]
 
 
 def _run(kernel, n: int, args: tuple) -> None:
@@ -861,6 +929,21 @@ def energy_rate(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatA
     return out
 
 
+def energy_rate_and_rhs(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatArray,
+                        xi: FloatArray, dxi: FloatArray, ps: FloatArray, constant: bool):
+    """:func:`energy_rate` and the disturbed right-hand side ``h(psi, xi + x) - xi'`` at the same
+    states, shapes (n,) and (n, 6), from one kernel (block kernels only: ``data.block``)."""
+    n = x.shape[0]
+    out = np.empty(n)
+    f_out = np.empty((n, 6))
+    c = np.ascontiguousarray
+    args = (c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
+            c(dxi, dtype=np.float64), c(ps, dtype=np.float64), _controls(eq), data.P,
+            data.scalars, data.stations, data.table, bool(constant), out, f_out)
+    _run(_energy_rate_rhs_block_range, n, args)
+    return out, f_out
+
+
 def energy_value(eq: BladeEquations, data: KernelData, psi: FloatArray, x: FloatArray,
                  xi: FloatArray, ps: FloatArray) -> FloatArray:
     """The energy function's ``W`` (J) for flat ``psi`` (n,) and disturbances ``x`` (n, 6); ``xi``
@@ -871,5 +954,5 @@ def energy_value(eq: BladeEquations, data: KernelData, psi: FloatArray, x: Float
     c = np.ascontiguousarray
     args = (c(psi, dtype=np.float64), c(x, dtype=np.float64), c(xi, dtype=np.float64),
             c(ps, dtype=np.float64), _controls(eq), data.P, data.scalars, out)
-    _run(_energy_value_range, n, args)
+    _run(_energy_value_block_range if data.block else _energy_value_range, n, args)
     return out
