@@ -449,19 +449,22 @@ def sphere_extremum(
     p0, r0, u0 = psi[rows], levels[rows, il], directions[idir]
     bounds = (lo[rows], hi[rows]) if shell is not None else None
     refine_stop = stop_above if sign > 0 and not per_psi else None
+    settle = settle_at if per_psi and sign > 0 else None
     if n_iter > 0 and psi_free(fun):  # each distinct start refined once (its azimuth stays put)
         key = np.column_stack([r0, idir] + (list(bounds) if bounds is not None else []))
         _, first, inverse = np.unique(key, axis=0, return_index=True, return_inverse=True)
         inverse = inverse.reshape(-1)
+        # the distinct starts are one azimuth's (every azimuth has the same): one group, which
+        # settles at the iteration each azimuth's group of the full search settles at
         val, _, r1, u1 = refine_extremum(
             fun, p0[first], r0[first], u0[first], scales, sign=sign, free_psi=free_psi,
             period=period, rho_bounds=None if bounds is None else (bounds[0][first], bounds[1][first]),
             n_iter=n_iter, multiplicity=np.bincount(inverse), stop_above=refine_stop,
+            groups=np.zeros(first.size, dtype=int) if settle is not None else None, settle_at=settle,
         )
         val, r1, u1 = sign * val[inverse], r1[inverse], u1[inverse]
         p1 = np.mod(p0, period) if free_psi else p0
     elif n_iter > 0:
-        settle = settle_at if per_psi and sign > 0 else None
         val, p1, r1, u1 = refine_extremum(
             fun, p0, r0, u0, scales, sign=sign, free_psi=free_psi, period=period,
             rho_bounds=bounds, n_iter=n_iter, stop_above=refine_stop,
