@@ -43,7 +43,7 @@ from .taylor_enclosure import taylor_evaluate
 
 _STATE_INDEX = {name: i for i, name in enumerate(STATE_NAMES)}
 
-DEFAULT_MODEL_INTERVALS = 64
+DEFAULT_MODEL_INTERVALS = 32
 """Azimuth intervals of the Taylor models of :func:`prove_blade` in forward flight (``method="taylor"``)."""
 
 __all__ = ["BladeProofSystem", "EnclosureWidth", "designed_quadratic_form", "enclosure_width", "proof_problem",
@@ -258,8 +258,7 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
         Azimuth intervals of the Taylor models and of the branch and bound (``"taylor"``; a divisor
         of ``n_intervals``): default 1 in hover, else ``DEFAULT_MODEL_INTERVALS``.
     max_boxes : int, optional
-        Boxes of the branch and bound (``"taylor"``; default 200 000 in hover, 40 000 per model
-        interval elsewhere).
+        Boxes of each branch and bound (``"taylor"``; default 200 000 in hover, 300 000 elsewhere).
 
     Returns
     -------
@@ -284,7 +283,7 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
     if n_models is None:
         n_models = 1 if system.enclosure.constant and N == 1 else min(DEFAULT_MODEL_INTERVALS, N)
     if max_boxes is None:
-        max_boxes = 200_000 if n_models == 1 else 40_000 * int(n_models)
+        max_boxes = 200_000 if n_models == 1 else 300_000
     with iv.arithmetic("balls"):
         return prove_quadratic_models(system, quadratic, A, scales=fun.scales, n_intervals=N, order=order,
                                       n_models=n_models, max_boxes=max_boxes, patience=max(max_boxes // 4, 1))

@@ -52,7 +52,7 @@ from . import intervals as iv
 from .balls import Balls, U as _U
 from .balls import _K, _PAD
 
-__all__ = ["BandPolynomial", "BandResult", "band_polynomial", "largest_bound"]
+__all__ = ["BandPolynomial", "BandResult", "band_polynomial", "hopeless", "largest_bound"]
 
 
 @dataclass(frozen=True)
@@ -118,7 +118,8 @@ def _monomial_index(exps: np.ndarray) -> dict:
 
 
 def band_polynomial(S: Balls, dS: Balls, coef: Balls, K_exponents: np.ndarray, R: np.ndarray,
-                    residual: np.ndarray, cube: float, n0: np.ndarray | None = None) -> BandPolynomial:
+                    residual: np.ndarray, cube: float, n0: np.ndarray | None = None,
+                    keep: int | None = 2) -> BandPolynomial:
     """The face polynomials ``F`` of ``W'`` from the averaged Jacobian's models.
 
     Parameters
@@ -136,6 +137,10 @@ def band_polynomial(S: Balls, dS: Balls, coef: Balls, K_exponents: np.ndarray, R
         Upper bounds of ``|S g0|``.
     cube : float
         ``A_c`` (> 0).
+    keep : int or None
+        The models' terms of degree above ``keep`` are moved into the remainder (``|t^alpha| <= 1``
+        on the cube): ``W'``'s polynomial then has degree ``keep + 2``, cheaper to bound (default 2;
+        None keeps every term).
     n0 : numpy.ndarray, shape (N,), optional
         Upper bounds of ``lambda_max`` of the quadratic part, given (for example from the
         Jacobian at the steady motion on finer intervals, ``R`` then covering ``K - J0``'s
@@ -147,6 +152,12 @@ def band_polynomial(S: Balls, dS: Balls, coef: Balls, K_exponents: np.ndarray, R
     """
     S, dS, coef = fb.as_balls(S), fb.as_balls(dS), fb.as_balls(coef)
     K_exponents = np.asarray(K_exponents, dtype=int)
+    if keep is not None and np.any(K_exponents.sum(axis=1) > keep):
+        high = K_exponents.sum(axis=1) > keep
+        moved = Balls(coef.mid[:, high], coef.rad[:, high]).magnitude()
+        R = (Balls(np.asarray(R, dtype=float)) + Balls(moved).sum(axis=1)).upper()
+        coef = Balls(coef.mid[:, ~high], coef.rad[:, ~high])
+        K_exponents = K_exponents[~high]
     N, n = S.shape[0], S.shape[-1]
     # p(t) = t^T S' t + 2 sum_alpha sum_ij (S C_alpha)_ij t_i t_j t^alpha
     SC = fb.matmul(S[:, None, :, :], coef) * 2.0                    # (N, M_K, n, n)
@@ -497,7 +508,10 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
                 break
         if count >= max_boxes:
             rho = min(rho, float(np.nextafter(np.min(rmin), -np.inf)))
-            stop = f"stopped after {count} boxes ({k.size} open)"
+            where = np.bincount(k, minlength=N)
+            top = np.argsort(where)[::-1][:3]
+            stop = (f"stopped after {count} boxes ({k.size} open, most in intervals "
+                    + ", ".join(f"{int(i)} ({int(where[i])})" for i in top if where[i]) + ")")
             break
         # the next batch, first in first out (breadth first)
         if k.size > batch:
@@ -583,3 +597,18 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
     A = max(A, 0.0)
     return BandResult(A=A, boxes=count, estimate=estimate,
                       message=f"W' < 0 shown on |y| <= {A:.4g}, W >= {level:.4g} ({stop}; {count} boxes)")
+
+
+def hopeless(bp: BandPolynomial, samples: int = 2000, seed: int = 0) -> bool:
+    """True where the models cannot show any bound: at a sampled direction ``v`` on a face, the
+    remainder's term ``2 sum_jk |S v|_j R_jk |v_k|`` (at the midpoint of ``S``) reaches
+    ``-n0 |v|^2``, so the bound of :func:`largest_bound` is not negative however near the origin
+    (the remainder does not shrink with the radius). A float screen to skip a hopeless search: it
+    decides nothing about the proof."""
+    n = bp.n
+    rng = np.random.default_rng(seed)
+    u = rng.normal(size=(samples, n))
+    v = u / np.max(np.abs(u), axis=1, keepdims=True)
+    Sv = np.abs(np.einsum("kij,sj->ksi", bp.S.mid, v))                # (N, samples, n)
+    rterm = 2.0 * np.einsum("ksj,kjl,sl->ks", Sv, bp.R, np.abs(v))
+    return bool(np.any(rterm + bp.n0[:, None] * np.sum(v * v, axis=1)[None, :] >= 0))

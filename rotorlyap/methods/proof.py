@@ -350,7 +350,7 @@ def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: f
 def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, *, scales,
                            n_intervals: int = 1, period: float = 2 * np.pi, order: int = 3,
                            n_models: int | None = None, max_boxes: int = 200_000, patience: int = 50_000,
-                           floor: float = 0.25, refits: int = 2) -> Proof:
+                           floor: float = 0.25, refits: int = 4) -> Proof:
     """Prove condition (h) for ``W = y^T S y`` from Taylor models of the averaged Jacobian, and find
     the largest bound that holds.
 
@@ -398,10 +398,12 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         The band is searched down to the level of ``floor`` times the cube (the proved bound must
         reach it; else the search is repeated with the floor at a quarter of the bound found).
     refits : int
-        Where the bound found is below half the cube of the models (or nothing is found), the
-        models are taken again over the cube of 1.5 times the bound found (a quarter of the cube),
-        up to ``refits`` times: their remainders shrink with the cube. The largest bound proved is
-        returned.
+        Where the bound found is below half the cube of the models (or nothing is found, or the
+        remainder alone defeats the quadratic part at a sampled direction,
+        :func:`rotorlyap.methods.band.hopeless`), the models are taken again over the cube of 1.5
+        times the bound found (0.4 of the cube): their remainders shrink with the cube; where the
+        bound found fills the cube, over a larger cube (below the smallest that was too big), up to
+        ``refits`` times. The largest bound proved is returned.
 
     Returns
     -------
@@ -412,7 +414,7 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         terms as :func:`prove_quadratic`.
     """
     from . import balls as fb
-    from .band import band_polynomial, largest_bound
+    from .band import band_polynomial, hopeless, largest_bound
 
     A = float(A)
     if not (np.isfinite(A) and A > 0):
@@ -467,28 +469,38 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
     terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
              "nonlinear": np.full(N, np.nan)}
     base_ok = bool(s_min > 0 and np.all(m_hi < 0) and not _reasons(blocked0, psi))
+    too_big = None            # the smallest cube whose models could not reach half of it
     for _ in range(refits + 1 if base_ok else 0):
         bp, blocked, finite, deviation = models(cube)
         all_blocked = {**blocked0, **blocked}
-        if bp is None or _reasons(all_blocked, psi):
+        if bp is None or _reasons(all_blocked, psi) or hopeless(bp):
             found = 0.0
+            tried.append((0.0, False))
         else:
             low = floor * cube
-            for _ in range(4):
+            for _ in range(2):
                 c_low = float(np.nextafter(low * low * s_min * (1 - 1e-15), -np.inf))
                 res = largest_bound(bp, cube, c_low, max_boxes=max_boxes, patience=patience)
                 proved = res.A >= low and res.A > 0
                 tried.append((res.A, proved))
-                if proved or res.A <= 0:
+                if proved or res.A <= 0 or res.boxes >= max_boxes:  # a search cut short: no retry
                     break
                 low = res.A / 4
             found = res.A if proved else 0.0
             if proved and (best is None or found > best[0]):
                 best = (found, res, deviation)
         if found >= 0.5 * cube:
-            break
+            if found < 0.95 * cube or cube >= A:
+                break
+            # the cube limited the bound: a larger one, below the one that was too big
+            nxt = min(A, 2.0 * cube if too_big is None else np.sqrt(cube * too_big))
+            if nxt <= cube * 1.05:
+                break
+            cube = float(nxt)
+            continue
+        too_big = cube if too_big is None else min(too_big, cube)
         # the models over a smaller cube: smaller remainders
-        cube = 1.5 * found if found > 0 else 0.25 * cube
+        cube = 1.5 * found if found > 0 else 0.4 * cube
     if best is not None:
         res = best[1]
         terms["deviation"] = best[2]
