@@ -14,7 +14,9 @@ proves too much fails them):
   ``A < 1 / sqrt(lambda_max(F))``; the proved bound lies in ``[0.85, 1)`` times that;
 * the same system with the cubic term scaled up a hundredfold: the proved bound follows the closed
   form down (a prover blind to the cubic term would not);
-* the face polynomials reproduce ``W'`` at random points of the band.
+* the face polynomials reproduce ``W'`` at random points of the band;
+* the blade: every Table I hover proved between 0.8 and 1 of its numerical bound, above the balls'
+  proof, with the float ``W'`` negative on the proved sphere.
 """
 
 from __future__ import annotations
@@ -141,3 +143,25 @@ def test_face_polynomials_reproduce_w_dot_on_the_band():
             H = np.sum(bp.coef.mid[0, face] * np.prod(np.append(free, sigma)[None, :] ** bp.exponents, axis=1))
             quad = v @ (system.J0.T @ system.S + system.S @ system.J0) @ v
             assert np.isclose(quad + sigma * H, w_dot / (A * sigma) ** 2, rtol=1e-10, atol=1e-12)
+
+
+@pytest.mark.parametrize("cg", ["forward", "neutral", "backward"])
+def test_the_taylor_prover_reaches_most_of_every_table_i_hover_and_never_exceeds_it(cg):
+    """prove_blade (Taylor models, the default) in hover: between 0.8 and 1 of the numerical bound
+    (issue 41's target), the balls' proof below it, and the float W' negative at states sampled on
+    the proved band's outer sphere, where the band comes nearest to W' = 0."""
+    from rotorlyap import certify
+    from rotorlyap.analysis.proof import prove_blade
+    from rotorlyap.model.parameters import BladeParameters
+
+    cert = certify(BladeParameters.table_i(cg), 0.0, function="quadratic")
+    fun = cert.lyapunov
+    proof = prove_blade(fun, cert.bound)
+    assert proof.proved
+    assert 0.8 * cert.bound <= proof.A <= cert.bound
+    assert prove_blade(fun, cert.bound, method="balls").A < proof.A
+    rng = np.random.default_rng(5)
+    u = rng.normal(size=(4000, 6))
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    x = u * proof.A * fun.scales
+    assert np.all(fun.dW(np.zeros(x.shape[0]), x) < 0)

@@ -2,9 +2,16 @@
 
 :func:`prove_blade` takes a :class:`~rotorlyap.analysis.functions.QuadraticFunction` (the
 quadratic Liapunov function of the linearised blade about its steady motion, the one
-:func:`rotorlyap.certify` uses) and proves condition (h) of the theorem for it with
-:func:`rotorlyap.methods.proof.prove_quadratic`, on enclosures of the blade's equations
-(:class:`rotorlyap.analysis.enclosure.BladeEnclosure`):
+:func:`rotorlyap.certify` uses) and proves condition (h) of the theorem for it. By default
+(``method="taylor"``, issue 41) with Taylor models of the averaged Jacobian over the cube of the
+bound (:meth:`BladeProofSystem.jacobian_models`, from
+:func:`rotorlyap.analysis.taylor_enclosure.taylor_evaluate`): ``W'`` is a polynomial in the
+disturbance plus a remainder, and :func:`rotorlyap.methods.proof.prove_quadratic_models` shows it
+negative on the band by branch and bound over directions and radii
+(:mod:`rotorlyap.methods.band`); in forward flight the models are taken on coarse azimuth
+intervals (:data:`DEFAULT_MODEL_INTERVALS`) and the linear part on the fine ones. With
+``method="balls"``, the earlier prover, :func:`rotorlyap.methods.proof.prove_quadratic` on ball
+enclosures of the blade's equations (:class:`rotorlyap.analysis.enclosure.BladeEnclosure`):
 
 * the residual ``g0`` of the steady motion on ``n_intervals`` azimuth intervals
   (:meth:`rotorlyap.analysis.enclosure.BladeEnclosure.residual`, a mean-value form in the azimuth);
@@ -45,6 +52,10 @@ _STATE_INDEX = {name: i for i, name in enumerate(STATE_NAMES)}
 
 DEFAULT_MODEL_INTERVALS = 32
 """Azimuth intervals of the Taylor models of :func:`prove_blade` in forward flight (``method="taylor"``)."""
+
+FLIGHT_FIRST_CUBE = 0.65
+"""The first cube of the Taylor models of :func:`prove_blade` in forward flight, as a fraction of
+the bound asked (``method="taylor"``; measured at mu = 0.1: see ``first_cube``)."""
 
 __all__ = ["BladeProofSystem", "EnclosureWidth", "designed_quadratic_form", "enclosure_width", "proof_problem",
            "prove_blade", "prove_designed"]
@@ -216,7 +227,8 @@ def proof_problem(fun: QuadraticFunction, *, n_intervals: int | None = None, n_c
 def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = None,
                 n_coarse: int | None = None, n_bisect: int = 8, arithmetic: str | None = None,
                 method: str = "taylor", order: int = 3, n_models: int | None = None,
-                max_boxes: int | None = None) -> Proof:
+                max_boxes: int | None = None, patience: int | None = None,
+                first_cube: float | None = None) -> Proof:
     """Prove the quadratic function's certificate for the blade, up to the bound ``A``.
 
     Two provers (issue 41). ``method="taylor"`` (the default): the averaged Jacobian in Taylor
@@ -258,7 +270,15 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
         Azimuth intervals of the Taylor models and of the branch and bound (``"taylor"``; a divisor
         of ``n_intervals``): default 1 in hover, else ``DEFAULT_MODEL_INTERVALS``.
     max_boxes : int, optional
-        Boxes of each branch and bound (``"taylor"``; default 200 000 in hover, 300 000 elsewhere).
+        Boxes of each branch and bound (``"taylor"``; default 200 000 in hover, 600 000 elsewhere).
+    patience : int, optional
+        Boxes spent on one bound before the next smaller one (``"taylor"``; default a quarter of
+        ``max_boxes`` in hover, a sixth elsewhere).
+    first_cube : float, optional
+        The first cube of the models as a fraction of ``A`` (``"taylor"``; default 1 in hover,
+        ``FLIGHT_FIRST_CUBE`` elsewhere: over the whole cube of the numerical bound the models'
+        remainder on the retreating side, from the airfoil's and the compressible sections' kinks,
+        makes the search at mu = 0.1 end far inside, and a second cube costs as much again).
 
     Returns
     -------
@@ -283,10 +303,15 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
     if n_models is None:
         n_models = 1 if system.enclosure.constant and N == 1 else min(DEFAULT_MODEL_INTERVALS, N)
     if max_boxes is None:
-        max_boxes = 200_000 if n_models == 1 else 300_000
+        max_boxes = 200_000 if n_models == 1 else 600_000
+    if first_cube is None:
+        first_cube = 1.0 if n_models == 1 else FLIGHT_FIRST_CUBE
     with iv.arithmetic("balls"):
         return prove_quadratic_models(system, quadratic, A, scales=fun.scales, n_intervals=N, order=order,
-                                      n_models=n_models, max_boxes=max_boxes, patience=max(max_boxes // 4, 1))
+                                      n_models=n_models, max_boxes=max_boxes,
+                                      patience=(max(max_boxes // (4 if n_models == 1 else 6), 1)
+                                                if patience is None else int(patience)),
+                                      first_cube=first_cube)
 
 
 def designed_quadratic_form(fun) -> np.ndarray:

@@ -27,7 +27,11 @@ as its exact piecewise cubic, and the compressible sections' kinks (the Mach cap
 drag rise ``max(dm, 0)^4``) are enclosed by mean values about the model's centre with the
 generalised derivative's range (exact where the box stays on one side). Boxes where the relative
 wind may vanish or a compressible section's angle of attack may cross +-90 deg get non-finite
-models. Not yet used by the prover.
+models. On coarse azimuth intervals (a divisor of the motion's grid) the steady motion is a cubic in
+the azimuth fitted to the Hermite pieces the interval spans, with its deviation from them bounded
+(:func:`_fitted_motion`; the hull of the pieces, as before, widened the Jacobian's models by the
+motion's change over the interval). The prover uses the Jacobian's models
+(:meth:`rotorlyap.analysis.proof.BladeProofSystem.jacobian_models`).
 """
 
 from __future__ import annotations
@@ -305,8 +309,9 @@ def _steady_models(enc: BladeEnclosure, tau: TaylorModel, n: int):
     azimuth variable ``tau`` (``psi = psi_k + (pi / n) tau``): the cubic Hermite piece of each
     interval (``n`` a multiple of the grid ``K``), exactly as a polynomial in ``tau``, its
     coefficients balls as :func:`rotorlyap.methods.intervals.hermite_enclosure` forms them; for
-    ``n`` a divisor of ``K`` (coarse intervals over several pieces) the hulls of the pieces, balls
-    that do not follow ``tau``."""
+    ``n`` a divisor of ``K`` (coarse intervals over several pieces) a cubic in ``tau`` fitted to the
+    pieces with its deviation bounded (:func:`_fitted_motion`), and the derivative as the hull of
+    the pieces (balls that do not follow ``tau``; the Jacobian does not use it)."""
     if enc.motion is None:
         state = np.broadcast_to(enc.state, (n, 6))
         return [Balls(state[:, i]) for i in range(6)], [Balls(np.zeros(n)) for _ in range(6)]
@@ -417,8 +422,8 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         hover), six model variables. Else the ``n`` uniform azimuth intervals of one period: the
         azimuth offset within each interval is a seventh variable (the last), ``batch`` must
         broadcast to ``(n,)`` (one box per interval), and the steady motion (a multiple ``n`` of
-        its grid) enters as its exact piecewise cubic (``n`` a divisor of the grid: the hull of the
-        pieces each interval spans).
+        its grid) enters as its exact piecewise cubic (``n`` a divisor of the grid: a cubic in the
+        azimuth fitted to the pieces each interval spans, its deviation bounded, :func:`_fitted_motion`).
 
     Returns
     -------

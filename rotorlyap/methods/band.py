@@ -24,18 +24,26 @@ disturbance that the cancellations of the equations leave, kept exactly, and the
 apart. The band ``|y| <= A, W >= c`` of the theorem's condition (h) is, on a face,
 ``sigma |v| <= rho`` and ``sigma^2 v^T S v >= c / A_c^2`` (``rho = A / A_c <= 1``).
 
-:func:`largest_bound` shows ``W' < 0`` on the band by branch and bound over boxes of
-``(v, sigma)`` on each of the ``2 n`` faces: on a box, ``F`` is bounded above by its mean-value
-form ``F(centre) + sum_i |dF/dx_i (box)| w_i`` (the centre's value and the gradient's range over
-the box in ball arithmetic, :mod:`rotorlyap.methods.balls`), the remainder's term by
-``2 sum_jk |S v|_j R_jk |v_k|`` and the residual's by ``2 |S g0| |v| / (A_c sigma_lo)``, each
-in ball arithmetic; the box's ``sigma`` range is cut to the band (``sigma_lo = sqrt(c / (A_c^2
-max v^T S v))``, ``sigma_hi = rho / min |v|``, both rounded outwards) and a box with no point of
-the band is dropped. A box whose bound is not negative is split in the coordinate that contributes
-most to its mean-value term. The search stops with a failure where the polynomial part alone is
-not negative at a box centre in the band (``F >= 0`` there: the models cannot show the
-condition at this bound) or after ``max_boxes`` boxes. Every step is rigorous: a success is a
-proof for the model as the Taylor models enclose it.
+:func:`largest_bound` shows ``W' < 0`` on the band out to the largest bound it can, by branch and
+bound over boxes of ``(v, sigma)`` on each of the ``2 n`` faces. ``p``'s quadratic part is
+``t^T (S' + C_0^T S + S C_0) t <= n0 |t|^2`` (``n0`` from rigorous eigenvalue bounds), and the rest
+is ``sigma^3 H(v, sigma)`` with ``H`` a polynomial, so on a box
+
+    ``W' / (A_c sigma)^2 <= n0 min|v|^2 + sigma H + 2 sum_jk |S v|_j R_jk |v_k| + 2 |S g0| |v| / (A_c sigma_lo)``,
+
+``H`` bounded above by its mean-value form ``H(centre) + sum_i |dH/dx_i (box)| w_i`` (the centre's
+value and the gradient's range over the box in ball arithmetic: Rump's midpoint-radius formulas of
+:mod:`rotorlyap.methods.balls`, compiled by numba when it is installed), ``sigma H`` by
+``sigma_hi H`` or ``sigma_lo H`` after its sign, every other term in ball arithmetic. The box's
+``sigma`` range is cut to the band (``sigma_lo = sqrt(c / (A_c^2 max v^T S v))``,
+``sigma_hi = rho / min |v|``, both rounded outwards) and a box with no point of the band is dropped.
+A box whose bound is negative is closed; one that is not is split at the middle of the coordinate
+that contributes most to its mean-value term (the boxes are kept as float end points, so a split
+covers its box exactly). The bound steps down (:data:`STEPS`) where a box centre in the band has a
+polynomial part that is not negative (the models cannot show the condition there) or after
+``patience`` boxes without closing the search, every closed box staying closed; after ``max_boxes``
+boxes it drops below the nearest open box. At the end every point of the band lies in a closed box:
+``W' < 0`` there, for the model as the Taylor models enclose it (every step rigorous).
 
 Vectorised over azimuth intervals (one polynomial and one ``S`` per interval: ``S`` may be
 balls, ``p``'s coefficients are balls) and faces: every box carries its interval and face.
@@ -413,15 +421,17 @@ def _sigma_range(bp: BandPolynomial, k: np.ndarray, vc: np.ndarray, vw: np.ndarr
 
 
 def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: int = 200_000,
-                  patience: int = 50_000, steps=STEPS, batch: int = 8192, initial_split: int = 1) -> BandResult:
+                  patience: int = 50_000, steps=STEPS, batch: int = 8192, initial_split: int = 1,
+                  reserve: float = 0.25) -> BandResult:
     """The largest bound ``A <= A_max`` for which ``W' < 0`` is shown on ``|y| <= A, W(y) >= level``.
 
-    Best-first branch and bound (module docstring): the open boxes nearest the origin (smallest
-    ``sigma |v|``) are bounded first, ``batch`` at a time; a box whose bound is negative is
-    closed; a box centre in the band where the polynomial part alone is not negative lowers the
-    bound to that centre's radius (the models cannot show the condition there) and its box is
-    split further; boxes wholly beyond the bound are dropped. When ``max_boxes`` boxes have been
-    bounded, the bound drops below the nearest open box. At the end every point of
+    Branch and bound (module docstring), breadth first, ``batch`` boxes at a time: a box whose
+    bound is negative is closed; a box centre in the band where the polynomial part alone is not
+    negative caps the bound at that centre's radius (the models cannot show the condition there),
+    the bound then the next of ``steps`` times the cap; after ``patience`` boxes at one bound, the
+    next step; boxes wholly beyond the bound are dropped, closed boxes stay closed. In the last
+    ``reserve`` of ``max_boxes`` the open boxes nearest the origin go first; when ``max_boxes``
+    boxes have been bounded, the bound drops below the nearest open box. At the end every point of
     ``|y| <= A, W >= level`` lies in a closed box: ``W' < 0`` there.
 
     Parameters
@@ -435,10 +445,17 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         ``A^2 min l >= level`` (the certificate's level at ``A`` is at least this one).
     max_boxes : int
         Boxes bounded before the search stops.
+    patience : int
+        Boxes bounded at one bound before the next step down.
+    steps : sequence of float
+        The bounds tried, as fractions of the cap (:data:`STEPS`).
     batch : int
         Boxes bounded per step.
     initial_split : int
         Each free coordinate of each face split in ``2**initial_split`` to start.
+    reserve : float
+        The last fraction of ``max_boxes`` goes to the open boxes nearest the origin (best first,
+        no more steps down), so that a search cut short ends with its bound as far out as it can.
 
     Returns
     -------
@@ -513,9 +530,11 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
             stop = (f"stopped after {count} boxes ({k.size} open, most in intervals "
                     + ", ".join(f"{int(i)} ({int(where[i])})" for i in top if where[i]) + ")")
             break
-        # the next batch, first in first out (breadth first)
+        # the next batch: first in first out (breadth first); in the last ``reserve`` of the boxes,
+        # the open boxes nearest the origin (they set the bound if the search stops)
+        final = count >= (1.0 - reserve) * max_boxes
         if k.size > batch:
-            sel = np.arange(batch)
+            sel = np.argpartition(rmin, batch - 1)[:batch] if final else np.arange(batch)
             rest = np.ones(k.size, dtype=bool)
             rest[sel] = False
             held = (k[rest], face[rest], lo[rest], hi[rest])
@@ -554,7 +573,7 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         if np.any(in_band):
             np.maximum.at(estimate, k[in_band], point[in_band])
         bad = in_band & (point >= 0)
-        if np.any(bad) or count - since > patience:
+        if np.any(bad) or (count - since > patience and not final):
             # the models cannot show W' < 0 at a centre in the band (the cap drops to it), or the
             # step ran out of patience (the next step): every closed box stays closed
             if np.any(bad):

@@ -350,7 +350,7 @@ def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: f
 def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, *, scales,
                            n_intervals: int = 1, period: float = 2 * np.pi, order: int = 3,
                            n_models: int | None = None, max_boxes: int = 200_000, patience: int = 50_000,
-                           floor: float = 0.25, refits: int = 4) -> Proof:
+                           floor: float = 0.25, refits: int = 4, first_cube: float = 1.0) -> Proof:
     """Prove condition (h) for ``W = y^T S y`` from Taylor models of the averaged Jacobian, and find
     the largest bound that holds.
 
@@ -401,9 +401,13 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         Where the bound found is below half the cube of the models (or nothing is found, or the
         remainder alone defeats the quadratic part at a sampled direction,
         :func:`rotorlyap.methods.band.hopeless`), the models are taken again over the cube of 1.5
-        times the bound found (0.4 of the cube): their remainders shrink with the cube; where the
+        times the bound found (0.4 of the cube; at least half of it after a search cut short by
+        ``max_boxes``): their remainders shrink with the cube; where the
         bound found fills the cube, over a larger cube (below the smallest that was too big), up to
         ``refits`` times. The largest bound proved is returned.
+    first_cube : float
+        The first cube of the models, as a fraction of ``A`` (the bound proved is at most the
+        largest cube tried).
 
     Returns
     -------
@@ -463,7 +467,9 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
     tried = []
     res = None
     best = None
-    cube = A
+    if not 0 < first_cube <= 1:
+        raise ValueError(f"first_cube must lie in (0, 1], got {first_cube!r}")
+    cube = A * first_cube
     finite = np.ones(N, dtype=bool)
     all_blocked = dict(blocked0)
     terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
@@ -475,6 +481,7 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         all_blocked = {**blocked0, **blocked}
         if bp is None or _reasons(all_blocked, psi) or hopeless(bp):
             found = 0.0
+            res = None
             tried.append((0.0, False))
         else:
             low = floor * cube
@@ -499,8 +506,10 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
             cube = float(nxt)
             continue
         too_big = cube if too_big is None else min(too_big, cube)
-        # the models over a smaller cube: smaller remainders
-        cube = 1.5 * found if found > 0 else 0.4 * cube
+        # the models over a smaller cube: smaller remainders (a search cut short by max_boxes says
+        # little about where it would have ended: a quarter smaller)
+        cut_short = res is not None and res.boxes >= max_boxes
+        cube = max(1.5 * found, 0.5 * cube) if cut_short else (1.5 * found if found > 0 else 0.4 * cube)
     if best is not None:
         res = best[1]
         terms["deviation"] = best[2]
@@ -520,7 +529,8 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
     elif _reasons(all_blocked, psi) or not np.all(finite):
         why = "no enclosure: " + (_reasons(all_blocked, psi) or "the Taylor models are not finite")
     elif res is None:
-        why = "nothing was tried"
+        why = ("the models' remainder alone defeats the quadratic part (rotorlyap.methods.band.hopeless) "
+               "on every cube tried" if tried else "nothing was tried")
     elif not np.all(m_hi < 0):
         k = int(np.flatnonzero(~(m_hi < 0))[0])
         why = (f"the linear part at psi = {np.degrees(psi[k]):.1f} deg: lambda_max(S' + J0^T S + S J0) <= "
