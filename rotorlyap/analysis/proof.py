@@ -53,7 +53,7 @@ _STATE_INDEX = {name: i for i, name in enumerate(STATE_NAMES)}
 DEFAULT_MODEL_INTERVALS = 32
 """Azimuth intervals of the Taylor models of :func:`prove_blade` in forward flight (``method="taylor"``)."""
 
-FLIGHT_FIRST_CUBE = 0.65
+FLIGHT_FIRST_CUBE = 0.75
 """The first cube of the Taylor models of :func:`prove_blade` in forward flight, as a fraction of
 the bound asked (``method="taylor"``; measured at mu = 0.1: see ``first_cube``)."""
 
@@ -270,7 +270,7 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
         Azimuth intervals of the Taylor models and of the branch and bound (``"taylor"``; a divisor
         of ``n_intervals``): default 1 in hover, else ``DEFAULT_MODEL_INTERVALS``.
     max_boxes : int, optional
-        Boxes of each branch and bound (``"taylor"``; default 200 000 in hover, 600 000 elsewhere).
+        Boxes of each branch and bound (``"taylor"``; default 200 000 in hover, 1 200 000 elsewhere).
     patience : int, optional
         Boxes spent on one bound before the next smaller one (``"taylor"``; default a quarter of
         ``max_boxes`` in hover, a sixth elsewhere).
@@ -303,7 +303,7 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
     if n_models is None:
         n_models = 1 if system.enclosure.constant and N == 1 else min(DEFAULT_MODEL_INTERVALS, N)
     if max_boxes is None:
-        max_boxes = 200_000 if n_models == 1 else 600_000
+        max_boxes = 200_000 if n_models == 1 else 1_200_000
     if first_cube is None:
         first_cube = 1.0 if n_models == 1 else FLIGHT_FIRST_CUBE
     with iv.arithmetic("balls"):
