@@ -14,7 +14,8 @@ proves too much fails them):
   ``A < 1 / sqrt(lambda_max(F))``; the proved bound lies in ``[0.85, 1)`` times that;
 * the same system with the cubic term scaled up a hundredfold: the proved bound follows the closed
   form down (a prover blind to the cubic term would not);
-* the face polynomials reproduce ``W'`` at random points of the band;
+* the face polynomials reproduce ``W'`` at random points of the band, and the compiled box bounds
+  contain a face polynomial's value at the centre and every sampled partial derivative in the box;
 * the blade: every Table I hover proved between 0.8 and 1 of its numerical bound, above the balls'
   proof, with the float ``W'`` negative on the proved sphere.
 """
@@ -165,3 +166,36 @@ def test_the_taylor_prover_reaches_most_of_every_table_i_hover_and_never_exceeds
     u /= np.linalg.norm(u, axis=1)[:, None]
     x = u * proof.A * fun.scales
     assert np.all(fun.dW(np.zeros(x.shape[0]), x) < 0)
+
+
+def test_the_box_bounds_contain_the_polynomial_and_its_gradient():
+    """The compiled bound of a face polynomial over boxes (rotorlyap.methods.band._Evaluator): the
+    ball at the centre contains the polynomial's value there (floats in long double), and the
+    gradient's bound over the box is at least every sampled partial derivative in it."""
+    from rotorlyap.methods.band import _Evaluator
+
+    system, exact = _rotated_cubic(3.0)
+    A = 0.9 * exact
+    coef, rem, exps, _ = system.jacobian_models(1, A * np.ones(3), 3)
+    S, dS = system.quadratic(1)
+    bp = band_polynomial(S, dS, coef, exps, rem, np.zeros(1), A, keep=None)
+    ev = _Evaluator(bp)
+    rng = np.random.default_rng(11)
+    B = 64
+    face = rng.integers(0, 6, B)
+    xc = rng.uniform(-0.8, 0.8, (B, 3))
+    xc[:, -1] = rng.uniform(0.2, 0.8, B)
+    xw = rng.uniform(0.0, 0.2, (B, 3))
+    c = Balls(bp.coef.mid[0, face], bp.coef.rad[0, face])
+    centre, grad = ev.centre_and_gradient(c, xc, xw)
+    E = bp.exponents
+    exact_c = np.sum(c.mid.astype(np.longdouble) * np.prod(xc[:, None, :].astype(np.longdouble) ** E, axis=-1), axis=1)
+    assert np.all((centre.lower() <= exact_c) & (exact_c <= centre.upper()))
+    for _ in range(20):
+        x = xc + xw * rng.uniform(-1, 1, xc.shape)
+        for i in range(3):
+            dE = E.copy()
+            mult = dE[:, i].astype(float)
+            dE[:, i] = np.maximum(dE[:, i] - 1, 0)
+            g = np.sum(c.mid * mult * np.prod(x[:, None, :] ** dE, axis=-1), axis=1)
+            assert np.all(np.abs(g) <= grad[:, i] * (1 + 1e-12) + 1e-12)
