@@ -141,8 +141,10 @@ class BladeProofSystem:
             # the sums of |c| rounded: relative u each, covered by the factor
             coef = Balls(mid, rad * (1.0 + 1e-12))
             rem = K.rem
-        bad = ~(np.all(np.isfinite(coef.mid) & np.isfinite(coef.rad), axis=(1, 2, 3)) & np.all(np.isfinite(rem), axis=(1, 2)))
-        blocked = {"the Taylor models are not finite (relative wind may vanish, or reverse flow)": bad} if bad.any() else {}
+        bad = ~(np.all(np.isfinite(coef.mid) & np.isfinite(coef.rad), axis=(1, 2, 3))
+                & np.all(np.isfinite(rem), axis=(1, 2)))
+        reason = "the Taylor models are not finite (relative wind may vanish, or reverse flow)"
+        blocked = {reason: bad} if bad.any() else {}
         return coef, rem, exps, blocked
 
     def _coarse(self, N: int) -> int:
