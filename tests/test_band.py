@@ -171,7 +171,9 @@ def test_the_taylor_prover_reaches_most_of_every_table_i_hover_and_never_exceeds
 def test_the_box_bounds_contain_the_polynomial_and_its_gradient():
     """The compiled bound of a face polynomial over boxes (rotorlyap.methods.band._Evaluator): the
     ball at the centre contains the polynomial's value there (floats in long double), and the
-    gradient's bound over the box is at least every sampled partial derivative in it."""
+    gradient's bound over the box is at least every sampled partial derivative in it; the second-order
+    form's gradient at the centre bounds the exact one, its Hessian balls contain every sampled second
+    derivative in the box."""
     from rotorlyap.methods.band import _Evaluator
 
     system, exact = _rotated_cubic(3.0)
@@ -199,3 +201,22 @@ def test_the_box_bounds_contain_the_polynomial_and_its_gradient():
             dE[:, i] = np.maximum(dE[:, i] - 1, 0)
             g = np.sum(c.mid * mult * np.prod(x[:, None, :] ** dE, axis=-1), axis=1)
             assert np.all(np.abs(g) <= grad[:, i] * (1 + 1e-12) + 1e-12)
+    # the second-order form's pieces: the gradient at the centre and the Hessian over the box
+    g_c, hess = ev.second_order(c, xc, xw)
+    for i in range(3):
+        dE = E.copy()
+        mult = dE[:, i].astype(float)
+        dE[:, i] = np.maximum(dE[:, i] - 1, 0)
+        g = np.sum(c.mid * mult * np.prod(xc[:, None, :] ** dE, axis=-1), axis=1)
+        assert np.all(np.abs(g) <= g_c[:, i] * (1 + 1e-12) + 1e-12)
+    for _ in range(20):
+        x = xc + xw * rng.uniform(-1, 1, xc.shape)
+        for p, (i, j) in enumerate(ev.pairs):
+            dE = E.copy()
+            mult = (dE[:, i] * (dE[:, i] - 1) if i == j else dE[:, i] * dE[:, j]).astype(float)
+            dE[:, i] -= 1
+            dE[:, j] -= 1
+            dE = np.maximum(dE, 0)
+            h = np.sum(c.mid * mult * np.prod(x[:, None, :] ** dE, axis=-1), axis=1)
+            slack = 1e-12 * (1 + np.abs(h))
+            assert np.all((hess[:, p].lower() - slack <= h) & (h <= hess[:, p].upper() + slack))

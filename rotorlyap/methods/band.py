@@ -31,8 +31,10 @@ is ``sigma^3 H(v, sigma)`` with ``H`` a polynomial, so on a box
 
     ``W' / (A_c sigma)^2 <= n0 min|v|^2 + sigma H + 2 sum_jk |S v|_j R_jk |v_k| + 2 |S g0| |v| / (A_c sigma_lo)``,
 
-``H`` bounded above by its mean-value form ``H(centre) + sum_i |dH/dx_i (box)| w_i`` (the centre's
-value and the gradient's range over the box in ball arithmetic: Rump's midpoint-radius formulas of
+``H`` bounded above by the smaller of its mean-value form ``H(centre) + sum_i |dH/dx_i (box)| w_i``
+and its second-order form ``H(centre) + sum_i |dH/dx_i (centre)| w_i + sum_i max(d2H/dx_i^2 (box), 0)
+w_i^2 / 2 + sum_{i<j} |d2H/dx_i dx_j (box)| w_i w_j`` (Taylor's theorem with the Lagrange remainder;
+the values, gradients and Hessians in ball arithmetic: Rump's midpoint-radius formulas of
 :mod:`rotorlyap.methods.balls`, compiled by numba when it is installed), ``sigma H`` by
 ``sigma_hi H`` or ``sigma_lo H`` after its sign, every other term in ball arithmetic. The box's
 ``sigma`` range is cut to the band (``sigma_lo = sqrt(c / (A_c^2 max v^T S v))``,
@@ -256,6 +258,16 @@ class _Evaluator:
             d[:, i] -= 1
             grads.append((np.flatnonzero(keep), np.array([add(tuple(int(v) for v in e)) for e in d], dtype=int),
                           E[keep, i].astype(float)))
+        hess = []
+        self.pairs = [(i, j) for i in range(m) for j in range(i, m)]
+        for i, j in self.pairs:
+            d = E.copy()
+            d[:, i] -= 1
+            d[:, j] -= 1
+            keep = np.all(d >= 0, axis=1)
+            mult = (E[keep, i] * (E[keep, i] - 1) if i == j else E[keep, i] * E[keep, j]).astype(float)
+            hess.append((np.flatnonzero(keep), np.array([add(tuple(int(v) for v in e)) for e in d[keep]], dtype=int),
+                         mult))
         # close downwards along the first nonzero exponent (each monomial = its parent times one variable)
         j = 0
         while j < len(exps):
@@ -291,6 +303,25 @@ class _Evaluator:
         self.gtgt = np.concatenate([g[1] for g in grads]).astype(np.int64) if grads else np.zeros(0, np.int64)
         self.gmul = np.concatenate([g[2] for g in grads]) if grads else np.zeros(0)
         self.gstart = np.concatenate([[0], np.cumsum([g[0].size for g in grads])]).astype(np.int64)
+        self.hsrc = np.concatenate([h[0] for h in hess] + [np.zeros(0, int)]).astype(np.int64)
+        self.htgt = np.concatenate([h[1] for h in hess] + [np.zeros(0, int)]).astype(np.int64)
+        self.hmul = np.concatenate([h[2] for h in hess] + [np.zeros(0)])
+        self.hstart = np.concatenate([[0], np.cumsum([h[0].size for h in hess])]).astype(np.int64)
+        self.pi = np.array([i for i, _ in self.pairs], dtype=int)
+        self.pj = np.array([j for _, j in self.pairs], dtype=int)
+
+    def second_order(self, coef: Balls, xc: np.ndarray, xw: np.ndarray):
+        """``(floats >= |dH/dx_i (centre)| (B, m), Hessian entries over the boxes as balls (B, pairs))``
+        (compiled only; None without numba)."""
+        if not _COMPILED:
+            return None
+        B = xc.shape[0]
+        P = len(self.pairs)
+        g, hm, hr = np.empty((B, self.m)), np.empty((B, P)), np.empty((B, P))
+        _second_kernel(np.ascontiguousarray(coef.mid), np.ascontiguousarray(coef.rad), np.ascontiguousarray(xc),
+                       np.ascontiguousarray(xw), self.order, self.parent, self.var, self.gsrc, self.gtgt, self.gmul,
+                       self.gstart, self.hsrc, self.htgt, self.hmul, self.hstart, g, hm, hr)
+        return g, Balls._new(hm, hr)
 
     def centre_and_gradient(self, coef: Balls, xc: np.ndarray, xw: np.ndarray):
         """``(H(centre) as balls (B,), floats >= |dH/dx_i| over the boxes (B, m))``."""
@@ -384,12 +415,53 @@ def _bound_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart, 
             out_g[b, i] = np.nextafter(abs(sm) + sr, np.inf)
 
 
+def _second_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart, hsrc, htgt, hmul, hstart,
+                   out_g, out_hm, out_hr):
+    """Per box ``b``: floats ``>= |dH/dx_i|`` at the centre (``out_g``) and the balls of the second
+    derivatives over the box (``out_hm``, ``out_hr``, one per pair ``i <= j``), as :func:`_bound_kernel`."""
+    B, Mall = cm.shape[0], parent.shape[0]
+    m = xc.shape[1]
+    P = hstart.shape[0] - 1
+    pm = np.empty(Mall)
+    pr = np.empty(Mall)
+    bm = np.empty(Mall)
+    br = np.empty(Mall)
+    for b in range(B):
+        for q in range(Mall):
+            j = order[q]
+            if parent[j] < 0:
+                pm[j] = 1.0
+                pr[j] = 0.0
+                bm[j] = 1.0
+                br[j] = 0.0
+            else:
+                v = var[j]
+                pm[j], pr[j] = _ball_mul(pm[parent[j]], pr[parent[j]], xc[b, v], 0.0)
+                bm[j], br[j] = _ball_mul(bm[parent[j]], br[parent[j]], xc[b, v], xw[b, v])
+        for i in range(m):
+            sm, sr = 0.0, 0.0
+            for q in range(gstart[i], gstart[i + 1]):
+                am, ar = _ball_mul(cm[b, gsrc[q]], cr[b, gsrc[q]], gmul[q], 0.0)
+                tm_, tr_ = _ball_mul(am, ar, pm[gtgt[q]], pr[gtgt[q]])
+                sm, sr = _ball_add(sm, sr, tm_, tr_)
+            out_g[b, i] = np.nextafter(abs(sm) + sr, np.inf)
+        for p in range(P):
+            sm, sr = 0.0, 0.0
+            for q in range(hstart[p], hstart[p + 1]):
+                am, ar = _ball_mul(cm[b, hsrc[q]], cr[b, hsrc[q]], hmul[q], 0.0)
+                tm_, tr_ = _ball_mul(am, ar, bm[htgt[q]], br[htgt[q]])
+                sm, sr = _ball_add(sm, sr, tm_, tr_)
+            out_hm[b, p] = sm
+            out_hr[b, p] = sr
+
+
 try:
     from numba import njit as _njit
 
     _ball_mul = _njit(cache=True)(_ball_mul)
     _ball_add = _njit(cache=True)(_ball_add)
     _bound_kernel = _njit(cache=True)(_bound_kernel)
+    _second_kernel = _njit(cache=True)(_second_kernel)
     _COMPILED = True
 except ImportError:  # pragma: no cover - the numpy path of _Evaluator
     _COMPILED = False
@@ -550,6 +622,20 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         for i in range(m):
             spread = spread + Balls(np.zeros(k.size), grad[:, i]) * xw[:, i]
         h_up = (centre + spread).upper()                             # H <= h_up on the box
+        second = ev.second_order(coef, xc, xw)
+        if second is not None:
+            # the second-order form: H(c) + grad H(c) h + h^T Hess(box) h / 2, each term bounded
+            g_c, hess = second
+            lin = Balls(np.zeros(k.size), np.zeros(k.size))
+            for i in range(m):
+                lin = lin + Balls(np.zeros(k.size), g_c[:, i]) * xw[:, i]
+            for p, (i, j) in enumerate(ev.pairs):
+                if i == j:
+                    top = np.maximum(hess[:, p].upper(), 0.0)
+                    lin = lin + Balls(np.zeros(k.size), top) * xw[:, i] * (xw[:, i] * 0.5)
+                else:
+                    lin = lin + Balls(np.zeros(k.size), hess[:, p].magnitude()) * xw[:, i] * xw[:, j]
+            h_up = np.minimum(h_up, (centre + lin).upper())
         # G = sigma H <= sigma_hi h_up (h_up >= 0) or sigma_lo h_up (h_up < 0)
         g_up = (Balls(np.where(h_up >= 0, hi[:, -1], lo[:, -1])) * Balls(h_up)).upper()
         # the quadratic part n0 |v|^2 <= n0 min |v|^2 (n0 < 0), else n0 max |v|^2
