@@ -41,7 +41,7 @@ def main() -> None:
         fun = quadratic_function(blade, steady)
         for arithmetic in ("arb", "balls"):
             t = time.perf_counter()
-            proof = prove_blade(fun, 0.1, arithmetic=arithmetic)
+            proof = prove_blade(fun, 0.1, arithmetic=arithmetic, method="balls")
             print(f"{label:14s} {arithmetic:5s}: A = {proof.A:.12g}, min lambda0 = {proof.min_lambda0:.12g}, "
                   f"{time.perf_counter() - t:.2f} s", flush=True)
 

@@ -236,15 +236,16 @@ def test_blade_enclosure_on_float_balls_contains_the_float_model_in_compressible
 
 
 def test_hover_proofs_on_float_balls_prove_what_arb_proves():
-    """prove_blade on both arithmetics: the same bounds tried, the same proved bound, and the
-    start radius equal to round-off (1e-12 relative)."""
+    """prove_blade's ball prover (method="balls") on both arithmetics: the same bounds tried, the
+    same proved bound, and the start radius equal to round-off (1e-12 relative)."""
     from rotorlyap.analysis.functions import quadratic_function
     from rotorlyap.analysis.proof import prove_blade
     from rotorlyap.model.forward_trim import forward_flight_trim
 
     trim = forward_flight_trim(BladeParameters.table_i("neutral"), 0.0)
     fun = quadratic_function(Blade(trim.params, 0.0), trim.steady)
-    fast, ref = prove_blade(fun, 0.1, arithmetic="balls"), prove_blade(fun, 0.1, arithmetic="arb")
+    fast = prove_blade(fun, 0.1, arithmetic="balls", method="balls")
+    ref = prove_blade(fun, 0.1, arithmetic="arb", method="balls")
     assert fast.proved and ref.proved
     assert fast.A >= ref.A and [ok for _, ok in fast.tried] == [ok for _, ok in ref.tried]
     assert fast.min_lambda0 == pytest.approx(ref.min_lambda0, rel=1e-12)

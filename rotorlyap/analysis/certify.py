@@ -20,7 +20,8 @@ blade is unstable only the quadratic function is tried: it says why nothing can 
 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
 message says so. With ``verify=True`` the same function is also *proved* by ball arithmetic
-(:func:`rotorlyap.analysis.proof.prove_blade`): the result carries a
+(:func:`rotorlyap.analysis.proof.prove_blade`: Taylor models of the equations in float balls and
+a branch and bound over the band, issue 41): the result carries a
 :class:`~rotorlyap.methods.proof.Proof` with the bound and start regions that follow from the
 theorem for the model as enclosed, usually smaller than the numerical ones. In forward flight a
 proof needs a steady motion with a residual near round-off, so ``verify=True`` first refines the
@@ -223,7 +224,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         Weight of the quadratic function (default: the identity in scaled coordinates).
     verify : bool
         Also prove the certificate by ball arithmetic (:func:`rotorlyap.analysis.proof.prove_blade`,
-        up to the numerical bound; seconds in hover, minutes in forward flight); in forward flight
+        up to the numerical bound; seconds in hover, tens of seconds in forward flight); in forward flight
         the periodic motion is first refined by shooting (module docstring). The prover handles
         the quadratic function: with ``verify=True``, ``"auto"`` means ``"quadratic"``.
     refine : bool, optional

@@ -2,9 +2,16 @@
 
 :func:`prove_blade` takes a :class:`~rotorlyap.analysis.functions.QuadraticFunction` (the
 quadratic Liapunov function of the linearised blade about its steady motion, the one
-:func:`rotorlyap.certify` uses) and proves condition (h) of the theorem for it with
-:func:`rotorlyap.methods.proof.prove_quadratic`, on enclosures of the blade's equations
-(:class:`rotorlyap.analysis.enclosure.BladeEnclosure`):
+:func:`rotorlyap.certify` uses) and proves condition (h) of the theorem for it. By default
+(``method="taylor"``, issue 41) with Taylor models of the averaged Jacobian over the cube of the
+bound (:meth:`BladeProofSystem.jacobian_models`, from
+:func:`rotorlyap.analysis.taylor_enclosure.taylor_evaluate`): ``W'`` is a polynomial in the
+disturbance plus a remainder, and :func:`rotorlyap.methods.proof.prove_quadratic_models` shows it
+negative on the band by branch and bound over directions and radii
+(:mod:`rotorlyap.methods.band`); in forward flight the models are taken on coarse azimuth
+intervals (:data:`DEFAULT_MODEL_INTERVALS`) and the linear part on the fine ones. With
+``method="balls"``, the earlier prover, :func:`rotorlyap.methods.proof.prove_quadratic` on ball
+enclosures of the blade's equations (:class:`rotorlyap.analysis.enclosure.BladeEnclosure`):
 
 * the residual ``g0`` of the steady motion on ``n_intervals`` azimuth intervals
   (:meth:`rotorlyap.analysis.enclosure.BladeEnclosure.residual`, a mean-value form in the azimuth);
@@ -34,7 +41,7 @@ import numpy as np
 
 from ..conventions import DEFAULT_SCALES, STATE_NAMES
 from ..methods import intervals as iv
-from ..methods.proof import Proof, lyapunov_enclosure, prove_quadratic
+from ..methods.proof import Proof, lyapunov_enclosure, prove_quadratic, prove_quadratic_models
 from ..model.blade import Blade
 from ..model.steady import TabulatedMotion, as_steady_motion
 from .enclosure import BladeEnclosure
@@ -42,6 +49,13 @@ from .functions import QuadraticFunction
 from .taylor_enclosure import taylor_evaluate
 
 _STATE_INDEX = {name: i for i, name in enumerate(STATE_NAMES)}
+
+DEFAULT_MODEL_INTERVALS = 32
+"""Azimuth intervals of the Taylor models of :func:`prove_blade` in forward flight (``method="taylor"``)."""
+
+FLIGHT_FIRST_CUBE = 0.75
+"""The first cube of the Taylor models of :func:`prove_blade` in forward flight, as a fraction of
+the bound asked (``method="taylor"``; measured at mu = 0.1: see ``first_cube``)."""
 
 __all__ = ["BladeProofSystem", "EnclosureWidth", "designed_quadratic_form", "enclosure_width", "proof_problem",
            "prove_blade", "prove_designed"]
@@ -74,6 +88,64 @@ class BladeProofSystem:
     def __init__(self, blade, steady, n_coarse: int | None = None, arithmetic: str | None = None):
         self.enclosure = BladeEnclosure(blade, steady, arithmetic=arithmetic)
         self.n_coarse = n_coarse
+        self._blade, self._steady = blade, steady
+        self._float_enclosure = None
+
+    def jacobian_models(self, N: int, radius, order: int):
+        """Taylor models of the averaged Jacobian over the cube ``|x_i| <= radius_i`` (state units).
+
+        :func:`rotorlyap.analysis.taylor_enclosure.taylor_evaluate` of order ``order`` (float
+        balls), the Jacobian's models averaged along the rays from the steady motion
+        (:meth:`~rotorlyap.methods.taylor.TaylorModel.ray_average`). In forward flight the azimuth
+        offset within each of the ``N`` intervals is a model variable; its monomials are moved into
+        the radii of the coefficients of the state's monomials (``|tau^j| <= 1``).
+
+        Returns
+        -------
+        coef : Balls, shape (N, M, 6, 6)
+            Coefficients per monomial of ``exponents`` in ``t = x / radius``.
+        rem : numpy.ndarray, shape (N, 6, 6)
+            Remainders.
+        exponents : numpy.ndarray of int, shape (M, 6)
+        blocked : dict
+            ``{reason: boolean (N,)}`` where the models are not finite.
+        """
+        from ..methods.balls import Balls
+
+        if self._float_enclosure is None:
+            self._float_enclosure = (self.enclosure if self.enclosure.arithmetic == "balls"
+                                     else BladeEnclosure(self._blade, self._steady, arithmetic="balls"))
+        enc = self._float_enclosure
+        r = np.asarray(radius, dtype=float)
+        if enc.constant:
+            ev = taylor_evaluate(enc, np.zeros(6), r, order)
+            K = ev.jacobian.ray_average()
+            exps = K.space.exponents
+            coef = Balls(np.moveaxis(K.coef, -1, 0)[None])                     # (1, M, 6, 6)
+            rem = K.rem[None]
+            coef = Balls(np.broadcast_to(coef.mid, (N,) + coef.shape[1:]), 0.0)
+            rem = np.broadcast_to(rem, (N, 6, 6))
+        else:
+            ev = taylor_evaluate(enc, np.zeros(6), r, order, n_intervals=N)
+            K = ev.jacobian.ray_average(over=range(6))                         # batch (N, 6, 6)
+            E = K.space.exponents
+            base = E[:, 6] == 0
+            exps = E[base, :6]
+            index = {tuple(e): i for i, e in enumerate(exps)}
+            target = np.array([index[tuple(e[:6])] for e in E])
+            c = np.moveaxis(K.coef, -1, 1)                                       # (N, M7, 6, 6)
+            mid = c[:, base]
+            rad = np.zeros_like(mid)
+            for j in np.flatnonzero(~base):
+                rad[:, target[j]] += np.abs(c[:, j])
+            # the sums of |c| rounded: relative u each, covered by the factor
+            coef = Balls(mid, rad * (1.0 + 1e-12))
+            rem = K.rem
+        bad = ~(np.all(np.isfinite(coef.mid) & np.isfinite(coef.rad), axis=(1, 2, 3))
+                & np.all(np.isfinite(rem), axis=(1, 2)))
+        reason = "the Taylor models are not finite (relative wind may vanish, or reverse flow)"
+        blocked = {reason: bad} if bad.any() else {}
+        return coef, rem, exps, blocked
 
     def _coarse(self, N: int) -> int:
         if self.enclosure.constant:
@@ -155,8 +227,21 @@ def proof_problem(fun: QuadraticFunction, *, n_intervals: int | None = None, n_c
 
 
 def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = None,
-                n_coarse: int | None = None, n_bisect: int = 8, arithmetic: str | None = None) -> Proof:
+                n_coarse: int | None = None, n_bisect: int = 8, arithmetic: str | None = None,
+                method: str = "taylor", order: int = 3, n_models: int | None = None,
+                max_boxes: int | None = None, patience: int | None = None,
+                first_cube: float | None = None) -> Proof:
     """Prove the quadratic function's certificate for the blade, up to the bound ``A``.
+
+    Two provers (issue 41). ``method="taylor"`` (the default): the averaged Jacobian in Taylor
+    models of order ``order`` over the cube of ``A`` (:meth:`BladeProofSystem.jacobian_models`),
+    so that ``W'`` is a polynomial in the disturbance that keeps the cancellations of the pitch
+    equation, plus a remainder; ``W' < 0`` shown on the band by branch and bound over directions
+    and radii (:func:`rotorlyap.methods.proof.prove_quadratic_models`,
+    :func:`rotorlyap.methods.band.largest_bound`): the proved bound is 0.90 to 0.95 of the
+    numerical one for the Table I hovers. ``method="balls"``: the mean-value form in ball
+    arithmetic over the tube (:func:`rotorlyap.methods.proof.prove_quadratic`; 0.17 to 0.32 of
+    the numerical bound in hover: the balls widen the cancelling terms).
 
     Parameters
     ----------
@@ -177,7 +262,25 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
         balls (the reference) or ``"auto"`` (the default,
         :data:`rotorlyap.analysis.enclosure.DEFAULT_ARITHMETIC`: Arb where the equations do not
         depend on the azimuth, a hover proof on one interval, float balls elsewhere, 25 times
-        faster for the forward-flight proof). Both are rigorous.
+        faster for the forward-flight proof). Both are rigorous. ``method="taylor"``: float balls
+        (the Taylor models' arithmetic); Arb is refused.
+    method : {"taylor", "balls"}
+        The prover (above).
+    order : int
+        Order of the Taylor models (``"taylor"``).
+    n_models : int, optional
+        Azimuth intervals of the Taylor models and of the branch and bound (``"taylor"``; a divisor
+        of ``n_intervals``): default 1 in hover, else ``DEFAULT_MODEL_INTERVALS``.
+    max_boxes : int, optional
+        Boxes of each branch and bound (``"taylor"``; default 200 000 in hover, 1 200 000 elsewhere).
+    patience : int, optional
+        Boxes spent on one bound before the next smaller one (``"taylor"``; default a quarter of
+        ``max_boxes`` in hover, a sixth elsewhere).
+    first_cube : float, optional
+        The first cube of the models as a fraction of ``A`` (``"taylor"``; default 1 in hover,
+        ``FLIGHT_FIRST_CUBE`` elsewhere: over the whole cube of the numerical bound the models'
+        remainder on the retreating side, from the airfoil's and the compressible sections' kinks,
+        makes the search at mu = 0.1 end far inside, and a second cube costs as much again).
 
     Returns
     -------
@@ -187,11 +290,30 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
     ------
     ValueError
         A periodic steady motion that is not tabulated, an airfoil without a table, a Mach-dependent
-        C81 section (``compressibility = "table"``: no Mach axis in the enclosures).
+        C81 section (``compressibility = "table"``: no Mach axis in the enclosures), an unknown
+        method, ``method="taylor"`` with ``arithmetic="arb"``.
     """
-    system, quadratic, N = proof_problem(fun, n_intervals=n_intervals, n_coarse=n_coarse, arithmetic=arithmetic)
-    with iv.arithmetic(system.enclosure.arithmetic):
-        return prove_quadratic(system, quadratic, A, scales=fun.scales, n_intervals=N, n_bisect=n_bisect)
+    if method == "balls":
+        system, quadratic, N = proof_problem(fun, n_intervals=n_intervals, n_coarse=n_coarse, arithmetic=arithmetic)
+        with iv.arithmetic(system.enclosure.arithmetic):
+            return prove_quadratic(system, quadratic, A, scales=fun.scales, n_intervals=N, n_bisect=n_bisect)
+    if method != "taylor":
+        raise ValueError(f"method must be 'taylor' or 'balls', got {method!r}")
+    if arithmetic not in (None, "auto", "balls"):
+        raise ValueError(f"method='taylor' works in float balls, got arithmetic={arithmetic!r}")
+    system, quadratic, N = proof_problem(fun, n_intervals=n_intervals, n_coarse=n_coarse, arithmetic="balls")
+    if n_models is None:
+        n_models = 1 if system.enclosure.constant and N == 1 else min(DEFAULT_MODEL_INTERVALS, N)
+    if max_boxes is None:
+        max_boxes = 200_000 if n_models == 1 else 1_200_000
+    if first_cube is None:
+        first_cube = 1.0 if n_models == 1 else FLIGHT_FIRST_CUBE
+    with iv.arithmetic("balls"):
+        return prove_quadratic_models(system, quadratic, A, scales=fun.scales, n_intervals=N, order=order,
+                                      n_models=n_models, max_boxes=max_boxes,
+                                      patience=(max(max_boxes // (4 if n_models == 1 else 6), 1)
+                                                if patience is None else int(patience)),
+                                      first_cube=first_cube)
 
 
 def designed_quadratic_form(fun) -> np.ndarray:
@@ -238,11 +360,14 @@ def designed_quadratic_form(fun) -> np.ndarray:
     return S
 
 
-def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8, arithmetic: str | None = None) -> Proof:
+def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8, arithmetic: str | None = None,
+                   method: str = "taylor", order: int = 3, max_boxes: int = 200_000) -> Proof:
     """Prove the certificate of a designed function that is a quadratic form (hover).
 
-    The same proof as :func:`prove_blade` (the tube ``|y_i| <= A`` about the equilibrium, one
-    ball matrix ``K`` for all of it), with ``S`` from :func:`designed_quadratic_form`.
+    The same proof as :func:`prove_blade` (``method="taylor"``, the default: Taylor models of the
+    averaged Jacobian and branch and bound over the band; ``"balls"``: the tube ``|y_i| <= A``
+    about the equilibrium, one ball matrix ``K`` for all of it), with ``S`` from
+    :func:`designed_quadratic_form`.
 
     Parameters
     ----------
@@ -254,6 +379,8 @@ def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8, arithmetic
     n_bisect : int
         Bisection steps on the bound.
     arithmetic : {"auto", "balls", "arb"}, optional
+        As :func:`prove_blade`.
+    method, order, max_boxes :
         As :func:`prove_blade`.
 
     Returns
@@ -269,7 +396,11 @@ def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8, arithmetic
         raise ValueError("prove_designed proves autonomous (hover) functions; in forward flight the designed "
                          "coefficients depend on the azimuth")
     S = designed_quadratic_form(fun)
-    system = BladeProofSystem(fun.blade, fun.steady, arithmetic=arithmetic)
+    if method not in ("taylor", "balls"):
+        raise ValueError(f"method must be 'taylor' or 'balls', got {method!r}")
+    if method == "taylor" and arithmetic not in (None, "auto", "balls"):
+        raise ValueError(f"method='taylor' works in float balls, got arithmetic={arithmetic!r}")
+    system = BladeProofSystem(fun.blade, fun.steady, arithmetic="balls" if method == "taylor" else arithmetic)
 
     def quadratic(N: int):
         balls = iv.balls(np.broadcast_to(S, (N, 6, 6)))
@@ -277,6 +408,9 @@ def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8, arithmetic
 
     bound = float(fun.design.A if A is None else A)
     with iv.arithmetic(system.enclosure.arithmetic):
+        if method == "taylor":
+            return prove_quadratic_models(system, quadratic, bound, scales=fun.scales, n_intervals=1, order=order,
+                                          max_boxes=max_boxes, patience=max(max_boxes // 4, 1))
         return prove_quadratic(system, quadratic, bound, scales=fun.scales, n_intervals=1, n_bisect=n_bisect)
 
 

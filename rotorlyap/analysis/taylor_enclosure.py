@@ -27,7 +27,11 @@ as its exact piecewise cubic, and the compressible sections' kinks (the Mach cap
 drag rise ``max(dm, 0)^4``) are enclosed by mean values about the model's centre with the
 generalised derivative's range (exact where the box stays on one side). Boxes where the relative
 wind may vanish or a compressible section's angle of attack may cross +-90 deg get non-finite
-models. Not yet used by the prover.
+models. On coarse azimuth intervals (a divisor of the motion's grid) the steady motion is a cubic in
+the azimuth fitted to the Hermite pieces the interval spans, with its deviation from them bounded
+(:func:`_fitted_motion`; the hull of the pieces, as before, widened the Jacobian's models by the
+motion's change over the interval). The prover uses the Jacobian's models
+(:meth:`rotorlyap.analysis.proof.BladeProofSystem.jacobian_models`).
 """
 
 from __future__ import annotations
@@ -305,16 +309,27 @@ def _steady_models(enc: BladeEnclosure, tau: TaylorModel, n: int):
     azimuth variable ``tau`` (``psi = psi_k + (pi / n) tau``): the cubic Hermite piece of each
     interval (``n`` a multiple of the grid ``K``), exactly as a polynomial in ``tau``, its
     coefficients balls as :func:`rotorlyap.methods.intervals.hermite_enclosure` forms them; for
-    ``n`` a divisor of ``K`` (coarse intervals over several pieces) the hulls of the pieces, balls
-    that do not follow ``tau``."""
+    ``n`` a divisor of ``K`` (coarse intervals over several pieces) a cubic in ``tau`` fitted to the
+    pieces with its deviation bounded (:func:`_fitted_motion`), and the derivative as the hull of
+    the pieces (balls that do not follow ``tau``; the Jacobian does not use it)."""
     if enc.motion is None:
         state = np.broadcast_to(enc.state, (n, 6))
         return [Balls(state[:, i]) for i in range(6)], [Balls(np.zeros(n)) for _ in range(6)]
     values, slopes = np.asarray(enc.motion.values, float), np.asarray(enc.motion.slopes, float)
     K = values.shape[0]
-    if n < K and K % n == 0:   # coarse intervals: the hull of the pieces each spans (no tau dependence)
-        xi, dxi = iv.hermite_enclosure(values, slopes, n)
-        return [xi[:, i] for i in range(6)], [dxi[:, i] for i in range(6)]
+    if n < K and K % n == 0:
+        # coarse intervals: the motion as a cubic in tau fitted to the pieces each interval spans,
+        # with the deviation from every piece bounded (_fitted_motion); its derivative the hull
+        _, dxi = iv.hermite_enclosure(values, slopes, n)
+        coeffs, err = _fitted_motion(values, slopes, n)
+        xi = []
+        for i in range(6):
+            c = coeffs[:, :, i]                                   # (n, 4) floats, tau^0..tau^3
+            model = tau * float(0.0) + c[:, 3]
+            for d in (2, 1, 0):
+                model = model * tau + c[:, d]
+            xi.append(model + Balls(np.zeros(n), err[:, i]))
+        return xi, [dxi[:, i] for i in range(6)]
     if n % K:
         raise ValueError(f"n_intervals ({n}) must be a multiple or a divisor of the steady motion's grid ({K})")
     sub = n // K
@@ -337,6 +352,57 @@ def _steady_models(enc: BladeEnclosure, tau: TaylorModel, n: int):
     return xi, dxi
 
 
+def _fitted_motion(values: np.ndarray, slopes: np.ndarray, n: int, degree: int = 3):
+    """A polynomial of ``degree`` in ``tau`` per interval for the periodic cubic Hermite interpolant
+    of the steady motion (grid ``K``, ``n`` a divisor of ``K``; interval ``k``:
+    ``psi = 2 pi (k + 1/2) / n + (pi / n) tau``), fitted by least squares at four points per piece,
+    and floats ``err`` with ``|xi(psi) - fit(tau)| <= err`` over the interval.
+
+    The bound: on the piece ``q`` of interval ``k`` (``tau = a_q + b t``, ``t`` in ``[0, 1]``, the
+    piece's own variable, ``a_q = -1 + 2 q / s``, ``b = 2 / s``, ``s = K / n``, exact floats for
+    ``K`` and ``n`` powers of 2) the deviation is a cubic in ``t``: its coefficients in ball
+    arithmetic (the fit composed with ``a_q + b t`` by Horner's rule, the piece's coefficients as
+    :func:`rotorlyap.methods.intervals.hermite_enclosure` forms them), bounded by the sum of their
+    magnitudes. Returns ``(coeffs (n, degree + 1, 6), err (n, 6))``.
+    """
+    K = values.shape[0]
+    sub = K // n
+    j = np.arange(K)
+    h = iv.pi() * 2.0 / float(K)
+    P0, P1 = Balls(values), Balls(values[(j + 1) % K])
+    B0, B1 = Balls(slopes) * h, Balls(slopes[(j + 1) % K]) * h
+    dP = P1 - P0
+    c = [P0, B0, dP * 3.0 - B0 * 2.0 - B1, B0 + B1 - dP * 2.0]    # piece(t) = sum c_i t^i, (K, 6) each
+    # least squares at t = 0, 1/3, 2/3, 1 of every piece (float: any fit is valid, its error is bounded)
+    t = np.array([0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0])
+    val = sum(ci.mid[:, None, :] * t[None, :, None] ** i for i, ci in enumerate(c))    # (K, 4, 6)
+    q = np.arange(sub)
+    tau = -1.0 + (2.0 * q[:, None] + 2.0 * t[None, :]) / sub                          # (sub, 4)
+    V = tau.reshape(-1)[:, None] ** np.arange(degree + 1)[None, :]                     # (4 sub, d + 1)
+    Y = val.reshape(n, sub * 4, 6)
+    coeffs = np.einsum("pm,kmi->kpi", np.linalg.pinv(V), Y)                            # (n, d + 1, 6)
+    # the fit in each piece's variable: f(a_q + b t) = sum g_i t^i (balls), Horner's rule
+    a_q = Balls(-1.0 + 2.0 * q / sub)                                                  # (sub,)
+    b = Balls(2.0 / sub)
+    C = coeffs[:, None, :, :]                                                          # (n, 1, d + 1, 6)
+    g = [Balls(C[:, :, degree, :] + 0.0 * a_q.mid[None, :, None])]                     # (n, sub, 6)
+    for d in range(degree - 1, -1, -1):
+        # g(t) <- g(t) (a_q + b t) + C_d
+        new = [g[0] * a_q.mid[None, :, None] + C[:, :, d, :]]
+        for i in range(1, len(g)):
+            new.append(g[i] * a_q.mid[None, :, None] + g[i - 1] * b)
+        new.append(g[-1] * b)
+        g = new
+    err = None
+    for i in range(max(len(g), 4)):
+        piece = c[i].reshape(n, sub, 6) if i < 4 else Balls(np.zeros((n, sub, 6)))
+        fit = g[i] if i < len(g) else Balls(np.zeros((n, sub, 6)))
+        term = (piece - fit).magnitude()
+        err = term if err is None else err + term
+    err = Balls(err).upper() * (1.0 + 1e-12)                                           # the sums' roundings
+    return coeffs, np.max(err, axis=1)
+
+
 def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
                     n_intervals: int | None = None) -> TaylorEvaluation:
     """The disturbed equations of the blade on Taylor models over boxes of disturbances.
@@ -356,8 +422,8 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         hover), six model variables. Else the ``n`` uniform azimuth intervals of one period: the
         azimuth offset within each interval is a seventh variable (the last), ``batch`` must
         broadcast to ``(n,)`` (one box per interval), and the steady motion (a multiple ``n`` of
-        its grid) enters as its exact piecewise cubic (``n`` a divisor of the grid: the hull of the
-        pieces each interval spans).
+        its grid) enters as its exact piecewise cubic (``n`` a divisor of the grid: a cubic in the
+        azimuth fitted to the pieces each interval spans, its deviation bounded, :func:`_fitted_motion`).
 
     Returns
     -------

@@ -51,7 +51,8 @@ import numpy as np
 
 from . import intervals as iv
 
-__all__ = ["Proof", "ProofSystem", "lyapunov_enclosure", "nonlinear_bounds", "prove_quadratic"]
+__all__ = ["Proof", "ProofSystem", "lyapunov_enclosure", "nonlinear_bounds", "prove_quadratic",
+           "prove_quadratic_models"]
 
 
 class ProofSystem(Protocol):
@@ -344,3 +345,197 @@ def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: f
                f"radius at A = {bound:.3g}")
     return Proof(proved=False, A=0.0, A_requested=A, level=0.0, psi=psi, lambda0=np.zeros(N), n_intervals=N,
                  terms=terms, tried=tuple(tried), message=f"not proved at {where}: {why}")
+
+
+def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, *, scales,
+                           n_intervals: int = 1, period: float = 2 * np.pi, order: int = 3,
+                           n_models: int | None = None, max_boxes: int = 200_000, patience: int = 50_000,
+                           floor: float = 0.25, refits: int = 4, first_cube: float = 1.0) -> Proof:
+    """Prove condition (h) for ``W = y^T S y`` from Taylor models of the averaged Jacobian, and find
+    the largest bound that holds.
+
+    The system gives, besides what :class:`ProofSystem` asks, ``jacobian_models(N, radius, order)``:
+    ``(coef, rem, exponents, blocked)``, the Taylor models of order ``order`` of the averaged
+    Jacobian ``K`` over the cube ``|x_i| <= radius_i`` (state units; ``coef`` balls (N, M, n, n)
+    per monomial of ``exponents`` (M, n) in ``t = x / radius``, ``rem`` (N, n, n) floats with
+    ``|K - sum coef t^alpha| <= rem``). ``W'`` is then a polynomial in the disturbance plus a
+    remainder (the cancellations of the equations kept in the polynomial, not widened by balls),
+    and :func:`rotorlyap.methods.band.largest_bound` shows ``W' < 0`` on the band by a best-first
+    branch and bound over directions and radii, out to the largest bound it can (at most ``A``:
+    the models are taken over the cube of ``A``).
+
+    The certificate is the one of :func:`prove_quadratic`: level ``c = A^2 min l`` (``l`` a lower
+    bound of the smallest eigenvalue of ``S``), start radius per interval ``sqrt(c / s_k)``.
+
+    Parameters
+    ----------
+    system : ProofSystem with ``jacobian_models``
+    quadratic : callable
+        As :func:`prove_quadratic`.
+    A : float
+        The largest bound to prove (scaled norm, > 0).
+    scales : array_like
+        The ``a_i`` (> 0).
+    n_intervals : int
+        ``N`` azimuth intervals.
+    period : float
+        Period of the system.
+    order : int
+        Order of the Taylor models.
+    n_models : int, optional
+        Azimuth intervals of the models and of the branch and bound (a divisor of ``N``; default
+        ``N``). With fewer, the quadratic part is bounded on the ``N`` fine intervals
+        (``lambda_max(S' + J0^T S + S J0)``, the largest over each coarse interval), the models'
+        non-constant terms and ``S`` are taken over the coarse interval (the azimuth's monomials
+        moved into the coefficients' radii), and the remainder doubled: ``K - J0`` lies in the
+        non-constant terms plus ``2 R`` (the models' constant term is within ``R`` of ``J0``).
+    max_boxes : int
+        Boxes of the branch and bound before it stops (the bound then stays below the open boxes).
+    patience : int
+        Boxes spent on one bound before the next smaller one is tried
+        (:func:`rotorlyap.methods.band.largest_bound`).
+    floor : float
+        The band is searched down to the level of ``floor`` times the cube (the proved bound must
+        reach it; else the search is repeated with the floor at a quarter of the bound found).
+    refits : int
+        Where the bound found is below half the cube of the models (or nothing is found, or the
+        remainder alone defeats the quadratic part at a sampled direction,
+        :func:`rotorlyap.methods.band.hopeless`), the models are taken again over the cube of 1.5
+        times the bound found (0.4 of the cube; at least half of it after a search cut short by
+        ``max_boxes``): their remainders shrink with the cube; where the
+        bound found fills the cube, over a larger cube (below the smallest that was too big), up to
+        ``refits`` times. The largest bound proved is returned.
+    first_cube : float
+        The first cube of the models, as a fraction of ``A`` (the bound proved is at most the
+        largest cube tried).
+
+    Returns
+    -------
+    Proof
+        ``terms["nonlinear"]``: per interval, the largest ``W' / |y|^2`` of the polynomial part
+        at the centres of the boxes in the band (an estimate of how near 0 the band comes, not a
+        bound); ``terms["deviation"]``: the largest remainder of the models (scaled); the other
+        terms as :func:`prove_quadratic`.
+    """
+    from . import balls as fb
+    from .band import band_polynomial, hopeless, largest_bound
+
+    A = float(A)
+    if not (np.isfinite(A) and A > 0):
+        raise ValueError(f"A must be a finite bound > 0, got {A!r}")
+    a = np.asarray(scales, dtype=float)
+    if a.shape != (system.n,) or not np.all(np.isfinite(a) & (a > 0)):
+        raise ValueError(f"scales must be {system.n} finite numbers > 0, got {scales!r}")
+    N = int(n_intervals)
+    if N < 1:
+        raise ValueError(f"n_intervals must be >= 1, got {n_intervals!r}")
+    if not 0 < floor < 1:
+        raise ValueError(f"floor must lie in (0, 1), got {floor!r}")
+    psi = period * np.arange(N) / N
+    base = _Base(system, quadratic, a, N)
+    s_lo, s_hi, e, m_hi, blocked0 = base.s_lo, base.s_hi, base.e, base.m_hi, base.blocked
+    s_min = float(np.min(s_lo))
+    Nc = N if n_models is None else int(n_models)
+    if Nc < 1 or N % Nc:
+        raise ValueError(f"n_models ({n_models!r}) must divide n_intervals ({N})")
+    group = N // Nc
+
+    def models(cube: float):
+        """The band polynomial from the models over the cube of ``cube``, the blocked intervals,
+        whether the models are finite everywhere, and the remainders (scaled)."""
+        coef, rem, exps, blocked = system.jacobian_models(Nc, cube * a, order)
+        blocked = {key: np.repeat(np.asarray(v, dtype=bool), group) for key, v in blocked.items()}
+        coef = fb.as_balls(coef)
+        # scaled coordinates: C_ij a_j / a_i (rounded outwards), the remainder likewise (upper bounds)
+        coef_y = (coef * a[None, None, None, :]) / a[None, None, :, None]
+        rem_y = fb.Balls(np.asarray(rem, dtype=float) * a[None, None, :] / a[None, :, None]).upper()
+        finite = np.repeat(np.all(np.isfinite(coef_y.mid) & np.isfinite(coef_y.rad), axis=(1, 2, 3))
+                           & np.all(np.isfinite(rem_y), axis=(1, 2)), group)
+        bp = None
+        if np.all(finite):
+            if Nc == N:
+                bp = band_polynomial(base.S, base.dS, coef_y, exps, rem_y, e, cube)
+            else:
+                S_c, dS_c = quadratic(Nc)
+                n0 = np.max(m_hi.reshape(Nc, group), axis=1)
+                e_c = np.max(e.reshape(Nc, group), axis=1)
+                bp = band_polynomial(fb.as_balls(S_c), fb.as_balls(dS_c), coef_y, exps,
+                                     fb.Balls(rem_y * 2.0).upper(), e_c, cube, n0=n0)
+        deviation = np.repeat(np.max(np.where(np.isfinite(rem_y), rem_y, np.inf), axis=(1, 2)), group)
+        return bp, blocked, finite, deviation
+
+    tried = []
+    res = None
+    best = None
+    if not 0 < first_cube <= 1:
+        raise ValueError(f"first_cube must lie in (0, 1], got {first_cube!r}")
+    cube = A * first_cube
+    finite = np.ones(N, dtype=bool)
+    all_blocked = dict(blocked0)
+    terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
+             "nonlinear": np.full(N, np.nan)}
+    base_ok = bool(s_min > 0 and np.all(m_hi < 0) and not _reasons(blocked0, psi))
+    too_big = None            # the smallest cube whose models could not reach half of it
+    for _ in range(refits + 1 if base_ok else 0):
+        bp, blocked, finite, deviation = models(cube)
+        all_blocked = {**blocked0, **blocked}
+        if bp is None or _reasons(all_blocked, psi) or hopeless(bp):
+            found = 0.0
+            res = None
+            tried.append((0.0, False))
+        else:
+            low = floor * cube
+            for _ in range(2):
+                c_low = float(np.nextafter(low * low * s_min * (1 - 1e-15), -np.inf))
+                res = largest_bound(bp, cube, c_low, max_boxes=max_boxes, patience=patience)
+                proved = res.A >= low and res.A > 0
+                tried.append((res.A, proved))
+                if proved or res.A <= 0 or res.boxes >= max_boxes:  # a search cut short: no retry
+                    break
+                low = res.A / 4
+            found = res.A if proved else 0.0
+            if proved and (best is None or found > best[0]):
+                best = (found, res, deviation)
+        if found >= 0.5 * cube:
+            if found < 0.95 * cube or cube >= A:
+                break
+            # the cube limited the bound: a larger one, below the one that was too big
+            nxt = min(A, 2.0 * cube if too_big is None else np.sqrt(cube * too_big))
+            if nxt <= cube * 1.05:
+                break
+            cube = float(nxt)
+            continue
+        too_big = cube if too_big is None else min(too_big, cube)
+        # the models over a smaller cube: smaller remainders (a search cut short by max_boxes says
+        # little about where it would have ended: a quarter smaller)
+        cut_short = res is not None and res.boxes >= max_boxes
+        cube = max(1.5 * found, 0.5 * cube) if cut_short else (1.5 * found if found > 0 else 0.4 * cube)
+    if best is not None:
+        res = best[1]
+        terms["deviation"] = best[2]
+        terms["nonlinear"] = np.repeat(res.estimate, group)
+    if best is not None:
+        bound = res.A
+        c = float(np.nextafter(bound * bound * s_min * (1 - 1e-15), -np.inf))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r = np.nextafter(np.sqrt(np.nextafter(c / s_hi, -np.inf)) * (1 - 1e-15), -np.inf)
+        return Proof(proved=True, A=float(bound), A_requested=A, level=c, psi=psi, lambda0=np.asarray(r, dtype=float),
+                     n_intervals=N, terms=terms, tried=tuple(tried),
+                     message=(f"proved: W' < 0 on the band |y| <= A = {bound:.4g}, W >= c over the whole period "
+                              f"({N} azimuth intervals; Taylor models of order {order}, branch and bound over "
+                              f"directions and radii: {res.boxes} boxes)"))
+    if s_min <= 0:
+        why = f"S is not proved positive definite (smallest eigenvalue bound {s_min:.3g})"
+    elif _reasons(all_blocked, psi) or not np.all(finite):
+        why = "no enclosure: " + (_reasons(all_blocked, psi) or "the Taylor models are not finite")
+    elif res is None:
+        why = ("the models' remainder alone defeats the quadratic part (rotorlyap.methods.band.hopeless) "
+               "on every cube tried" if tried else "nothing was tried")
+    elif not np.all(m_hi < 0):
+        k = int(np.flatnonzero(~(m_hi < 0))[0])
+        why = (f"the linear part at psi = {np.degrees(psi[k]):.1f} deg: lambda_max(S' + J0^T S + S J0) <= "
+               f"{m_hi[k]:.3g} is not proved negative")
+    else:
+        why = f"the branch and bound: {res.message}"
+    return Proof(proved=False, A=0.0, A_requested=A, level=0.0, psi=psi, lambda0=np.zeros(N), n_intervals=N,
+                 terms=terms, tried=tuple(tried), message=f"not proved: {why}")
