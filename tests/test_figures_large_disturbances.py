@@ -93,8 +93,12 @@ def test_the_limit_is_read_from_the_design_the_certificate_rests_on():
     tried = ((0.8, 2.0, True), (1.6, 4.0, True), (3.2, 8.0, True), (6.4, 16.0, False), (4.5, 11.0, False),
              (3.2, 8.0, False), (1.6, 4.0, True))
     assert _result(tried).limit("energy") == (1.6, 3.2)
+    # the largest success hardened at once, then a bisection step above it that failed last
+    tried = ((0.8, 2.0, True), (1.6, 4.0, True), (3.2, 8.0, True), (6.4, 16.0, False), (3.2, 8.0, True),
+             (4.5, 11.0, False))
+    assert _result(tried).limit("energy") == (3.2, 4.5)
     # nothing larger failed: no limit found by the program
-    assert np.isnan(_result(((0.8, 2.0, True),)).limit("energy")[1])
+    assert np.isnan(_result(((0.8, 2.0, True), (0.8, 2.0, True))).limit("energy")[1])
     # the last attempt failed: the design was not made
     assert all(np.isnan(_result(((0.8, 2.0, False),)).limit("energy")))
 

@@ -181,13 +181,19 @@ class CaseResult:
 
     def limit(self, function: str) -> tuple[float, float]:
         """For a designed function: the start radius of the design the certificate rests on (the
-        program's last attempt, its thorough check passed) and the smallest larger one the
-        program did not meet, scaled norm (NaN where there is none)."""
+        largest whose thorough design passed: an attempt ``(lam, A)`` met by the search and again,
+        thoroughly, later in ``tried``) and the smallest larger one the program did not meet,
+        scaled norm (NaN where there is none)."""
         c = self.candidate(function)
         tried = np.array(c.tried if c is not None else (), dtype=float).reshape(-1, 3)
-        if not tried.size or tried[-1, 2] == 0:
+        seen, hardened = set(), []
+        for lam, A, ok in tried:
+            if ok and (lam, A) in seen:
+                hardened.append(lam)
+            seen.add((lam, A))
+        if not hardened:
             return math.nan, math.nan
-        met = float(tried[-1, 0])
+        met = float(max(hardened))
         above = tried[(tried[:, 2] == 0) & (tried[:, 0] > met), 0]
         return met, (float(above.min()) if above.size else math.nan)
 
@@ -463,7 +469,7 @@ class LargeDisturbances:
                                + " and ".join(f"{STATE_NAMES[j]} {d[j]:+.1f}" for j in top))
             if r.proof is not None:
                 pl = r.proof
-                out.append(f"    proved (ball arithmetic, one tube): A = {_sig(pl.A):g}, lambda0 = {_sig(pl.lambda0):g}; "
+                out.append(f"    proved (Taylor models, branch and bound on the band): A = {_sig(pl.A):g}, lambda0 = {_sig(pl.lambda0):g}; "
                            f"Jacobian enclosure on |y_i| <= {pl.width.bound:g}: radius up to "
                            f"{_sig(pl.width.radius.max()):g} ({_sig(pl.width_without_air.radius.max()):g} without air "
                            f"loads), sampled variation {_sig(pl.width.variation.max()):g}, contains the sample: "

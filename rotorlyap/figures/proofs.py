@@ -1,10 +1,11 @@
-"""The proofs chapter: numerical certificates beside the ones proved by ball arithmetic.
+"""The proofs chapter: numerical certificates beside the ones proved from enclosures.
 
 * :func:`proof_table`: :func:`rotorlyap.certify` with ``verify=True`` for the Table I hovers and
-  one forward-flight case of the trimmed helicopter: bound and start region, numerical and
-  proved, and the size of each term of the proof;
-* :func:`nonlinear_growth` and :func:`figure_nonlinear_growth`: the proof's nonlinear term
-  against the bound in hover, as enclosed and as sampled (what limits the proved bound);
+  one forward-flight case of the trimmed helicopter (Taylor models and branch and bound): bound
+  and start region, numerical and proved, the size of each term of the proof, and the same
+  function proved by ball arithmetic alone for comparison;
+* :func:`nonlinear_growth` and :func:`figure_nonlinear_growth`: the ball-arithmetic prover's
+  nonlinear term against the bound in hover, as enclosed and as sampled (why balls stop short);
 * :func:`figure_flight_proof`: the forward-flight proof over the period: start radii and the
   terms per azimuth interval;
 * :func:`example_proofs`: the systems of chapters 1 and 2 (the oscillator, the counterexample);
@@ -19,9 +20,9 @@ import numpy as np
 
 from ..analysis.certify import Certificate, certify
 from ..analysis.functions import quadratic_function
-from ..analysis.proof import proof_problem
+from ..analysis.proof import proof_problem, prove_blade
 from ..conventions import DEFAULT_SCALES
-from ..methods.proof import nonlinear_bounds
+from ..methods.proof import Proof, nonlinear_bounds
 from ..model.blade import Blade
 from ..model.forward_trim import forward_flight_trim
 from ..model.parameters import BladeParameters
@@ -60,12 +61,17 @@ class ProofRow:
     label : str
         The case as the table names it.
     certificate : Certificate
-        :func:`rotorlyap.certify` with ``verify=True``.
+        :func:`rotorlyap.certify` with ``verify=True`` (its proof: Taylor models and branch and
+        bound, :func:`rotorlyap.analysis.proof.prove_blade`'s default).
+    balls : Proof, optional
+        The same function proved by ball arithmetic alone (``method="balls"``, the mean-value
+        form over the tube), for comparison.
     """
 
     key: str
     label: str
     certificate: Certificate
+    balls: Proof | None = None
 
     @property
     def numerical(self) -> tuple[float, float]:
@@ -82,6 +88,13 @@ class ProofRow:
     def ratio(self) -> float:
         """Proved over numerical smallest start radius."""
         return self.proved[1] / self.numerical[1] if self.numerical[1] > 0 else 0.0
+
+    @property
+    def balls_ratio(self) -> float:
+        """The ball-arithmetic proof's smallest start radius over the numerical one (NaN without)."""
+        if self.balls is None or not self.numerical[1] > 0:
+            return float("nan")
+        return self.balls.min_lambda0 / self.numerical[1]
 
     def term(self, name: str) -> float:
         """The largest over the period of a term of the proof at the proved bound."""
@@ -122,7 +135,10 @@ class ProofTable:
             out.append(f"{r.label}: numerical A {na:.3g}, lambda0 {nl:.3g}; proved A {pa:.3g}, "
                        f"lambda0 {pl:.3g}; ratio {r.ratio:.3f}; {r.certificate.proof.n_intervals} intervals")
             out.append(f"    terms at the proved bound: linear <= {r.term('linear'):.3f}, "
-                       f"|K - J0| <= {r.term('deviation'):.2g}, |S g0| {_bound_text(r.term('residual'))}")
+                       f"Taylor-model remainder <= {r.term('deviation'):.2g}, |S g0| {_bound_text(r.term('residual'))}")
+            if r.balls is not None:
+                out.append(f"    ball arithmetic alone (mean-value form): A {r.balls.A:.3g}, lambda0 "
+                           f"{r.balls.min_lambda0:.3g}; ratio {r.balls_ratio:.3f}")
         return "\n".join(out)
 
     def facts(self) -> dict:
@@ -145,7 +161,12 @@ class ProofTable:
                       f"ch10_{key}_lin": Rounded(r.term("linear"), 3),
                       f"ch10_{key}_dev": float(f"{r.term('deviation'):.2g}"),
                       f"ch10_{key}_res": _bound_text(r.term("residual"))})
+            if r.balls is not None:
+                f[f"ch10_{key}_balls_ratio"] = Rounded(r.balls_ratio, 3)
         hover = [r for r in self.rows if r.certificate.mu == 0]
+        if all(r.balls is not None for r in hover):
+            f["ch10_balls_ratio_lo"] = Rounded(min(r.balls_ratio for r in hover), 3)
+            f["ch10_balls_ratio_hi"] = Rounded(max(r.balls_ratio for r in hover), 3)
         f["ch10_ratio_lo"] = Rounded(min(r.ratio for r in hover), 3)
         f["ch10_ratio_hi"] = Rounded(max(r.ratio for r in hover), 3)
         f["ch10_hover_res"] = _bound_text(max(r.term("residual") for r in hover))
@@ -177,13 +198,17 @@ class ProofTable:
 def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
     """:func:`rotorlyap.certify` with ``verify=True`` for each hover case (Table I, hover trim) and
     the forward-flight case (``None`` to skip it): the trimmed helicopter of chapter 8."""
-    rows = [ProofRow(cg, f"{cg} C.G., hover", certify(BladeParameters.table_i(cg), 0.0, verify=True))
+    def row(key, label, cert):
+        balls = prove_blade(cert.lyapunov, cert.bound, method="balls") if cert.certified else None
+        return ProofRow(key, label, cert, balls)
+
+    rows = [row(cg, f"{cg} C.G., hover", certify(BladeParameters.table_i(cg), 0.0, verify=True))
             for cg in hover_cases]
     residual = float("nan")
     if flight is not None:
         cg, mu = flight
         cert = certify(BladeParameters.flight_case(cg), float(mu), verify=True)
-        rows.append(ProofRow("flight", f"{cg} C.G., mu = {mu:g}, trimmed", cert))
+        rows.append(row("flight", f"{cg} C.G., mu = {mu:g}, trimmed", cert))
         residual = _collocation_residual(cert)
     return ProofTable(tuple(rows), residual)
 
@@ -321,7 +346,7 @@ def figure_nonlinear_growth(data: NonlinearGrowth, figsize=(6.4, 4.8)):
     fig, ax = subplots(figsize=figsize)
     for c, e, s in zip(data.cases, data.enclosed, data.sampled):
         col, m = CG_COLORS.get(c, "k"), CG_MARKERS.get(c, "o")
-        ax.plot(data.A, e, "-", color=col, marker=m, ms=4, label=f"{c} C.G., enclosed (the proof)")
+        ax.plot(data.A, e, "-", color=col, marker=m, ms=4, label=f"{c} C.G., enclosed by balls")
         ax.plot(data.A, s, "--", color=col, marker=m, ms=4, mfc="white", label=f"{c} C.G., sampled")
     ax.axhline(0.0, color="k", lw=0.8)
     ax.set_xscale("log")
@@ -348,7 +373,8 @@ def figure_flight_proof(row: ProofRow, figsize=(6.6, 5.6)):
     ax1.set(ylabel=r"start radius $\lambda_0$ (scaled)")
     ax1.legend(fontsize=8.5, loc="center right")
     ax2.plot(psi_p, proof.terms["linear"], "-", color="0.5", lw=1, label="linear part (tube radius 0)")
-    ax2.plot(psi_p, proof.terms["nonlinear"], "-", color="k", lw=1, label="with the tube of the proved bound")
+    ax2.plot(psi_p, proof.terms["nonlinear"], "-", color="k", lw=1,
+             label="polynomial part at the proved bound (estimate)")
     ax2.axhline(0.0, color="k", lw=0.8)
     ax2.set(xlabel=r"azimuth $\psi$ (deg)", ylabel=r"largest $n$ (per rev)", xlim=(0, 360),
             xticks=np.arange(0, 361, 60))
