@@ -226,6 +226,21 @@ def nonlinear_bounds(system: ProofSystem, quadratic: Callable[[int], tuple], bou
     return np.array([float(np.max(base.nonlinear(float(A))[0])) for A in np.atleast_1d(bounds)])
 
 
+def _checked_problem(system: ProofSystem, A, scales, n_intervals) -> tuple[float, np.ndarray, int]:
+    """The bound, the scales and the number of intervals of a proof, checked: ``A`` finite and
+    > 0, ``scales`` the system's ``n`` finite numbers > 0, ``n_intervals`` >= 1."""
+    A = float(A)
+    if not (np.isfinite(A) and A > 0):
+        raise ValueError(f"A must be a finite bound > 0, got {A!r}")
+    a = np.asarray(scales, dtype=float)
+    if a.shape != (system.n,) or not np.all(np.isfinite(a) & (a > 0)):
+        raise ValueError(f"scales must be {system.n} finite numbers > 0, got {scales!r}")
+    N = int(n_intervals)
+    if N < 1:
+        raise ValueError(f"n_intervals must be >= 1, got {n_intervals!r}")
+    return A, a, N
+
+
 def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: float, *, scales,
                     n_intervals: int = 1, period: float = 2 * np.pi, n_bisect: int = 10,
                     A_min: float | None = None) -> Proof:
@@ -255,15 +270,7 @@ def prove_quadratic(system: ProofSystem, quadratic: Callable[[int], tuple], A: f
     -------
     Proof
     """
-    A = float(A)
-    if not (np.isfinite(A) and A > 0):
-        raise ValueError(f"A must be a finite bound > 0, got {A!r}")
-    a = np.asarray(scales, dtype=float)
-    if a.shape != (system.n,) or not np.all(np.isfinite(a) & (a > 0)):
-        raise ValueError(f"scales must be {system.n} finite numbers > 0, got {scales!r}")
-    N = int(n_intervals)
-    if N < 1:
-        raise ValueError(f"n_intervals must be >= 1, got {n_intervals!r}")
+    A, a, N = _checked_problem(system, A, scales, n_intervals)
     A_min = A * 1e-4 if A_min is None else float(A_min)
     psi = period * np.arange(N) / N
     base = _Base(system, quadratic, a, N)
@@ -420,15 +427,7 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
     from . import balls as fb
     from .band import band_polynomial, hopeless, largest_bound
 
-    A = float(A)
-    if not (np.isfinite(A) and A > 0):
-        raise ValueError(f"A must be a finite bound > 0, got {A!r}")
-    a = np.asarray(scales, dtype=float)
-    if a.shape != (system.n,) or not np.all(np.isfinite(a) & (a > 0)):
-        raise ValueError(f"scales must be {system.n} finite numbers > 0, got {scales!r}")
-    N = int(n_intervals)
-    if N < 1:
-        raise ValueError(f"n_intervals must be >= 1, got {n_intervals!r}")
+    A, a, N = _checked_problem(system, A, scales, n_intervals)
     if not 0 < floor < 1:
         raise ValueError(f"floor must lie in (0, 1), got {floor!r}")
     psi = period * np.arange(N) / N
