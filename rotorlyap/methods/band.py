@@ -377,6 +377,22 @@ def _ball_add(ma, ra, mb, rb):
     return c, (ra + rb + _U * abs(c)) * _K + _PAD
 
 
+def _monomials(b, order, parent, var, xc, xw, pm, pr, bm, br):
+    """Box ``b``'s monomials as balls, each by one ball product (its parent times a variable, in the
+    order ``order``): at the box's centre (``pm``, ``pr``) and over the box (``bm``, ``br``)."""
+    for q in range(parent.shape[0]):
+        j = order[q]
+        if parent[j] < 0:
+            pm[j] = 1.0
+            pr[j] = 0.0
+            bm[j] = 1.0
+            br[j] = 0.0
+        else:
+            v = var[j]
+            pm[j], pr[j] = _ball_mul(pm[parent[j]], pr[parent[j]], xc[b, v], 0.0)
+            bm[j], br[j] = _ball_mul(bm[parent[j]], br[parent[j]], xc[b, v], xw[b, v])
+
+
 def _bound_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart, out_m, out_r, out_g):
     """Per box ``b``: the ball of ``H`` at the centre (``out_m``, ``out_r``) and floats ``>= |dH/dx_i|``
     over the box (``out_g``): the monomials by one ball product each (parent times a variable, in
@@ -389,17 +405,7 @@ def _bound_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart, 
     bm = np.empty(Mall)
     br = np.empty(Mall)
     for b in range(B):
-        for q in range(Mall):
-            j = order[q]
-            if parent[j] < 0:
-                pm[j] = 1.0
-                pr[j] = 0.0
-                bm[j] = 1.0
-                br[j] = 0.0
-            else:
-                v = var[j]
-                pm[j], pr[j] = _ball_mul(pm[parent[j]], pr[parent[j]], xc[b, v], 0.0)
-                bm[j], br[j] = _ball_mul(bm[parent[j]], br[parent[j]], xc[b, v], xw[b, v])
+        _monomials(b, order, parent, var, xc, xw, pm, pr, bm, br)
         sm, sr = 0.0, 0.0
         for j in range(M):
             tm_, tr_ = _ball_mul(cm[b, j], cr[b, j], pm[j], pr[j])
@@ -427,17 +433,7 @@ def _second_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart,
     bm = np.empty(Mall)
     br = np.empty(Mall)
     for b in range(B):
-        for q in range(Mall):
-            j = order[q]
-            if parent[j] < 0:
-                pm[j] = 1.0
-                pr[j] = 0.0
-                bm[j] = 1.0
-                br[j] = 0.0
-            else:
-                v = var[j]
-                pm[j], pr[j] = _ball_mul(pm[parent[j]], pr[parent[j]], xc[b, v], 0.0)
-                bm[j], br[j] = _ball_mul(bm[parent[j]], br[parent[j]], xc[b, v], xw[b, v])
+        _monomials(b, order, parent, var, xc, xw, pm, pr, bm, br)
         for i in range(m):
             sm, sr = 0.0, 0.0
             for q in range(gstart[i], gstart[i + 1]):
@@ -460,6 +456,7 @@ try:
 
     _ball_mul = _njit(cache=True)(_ball_mul)
     _ball_add = _njit(cache=True)(_ball_add)
+    _monomials = _njit(cache=True)(_monomials)
     _bound_kernel = _njit(cache=True)(_bound_kernel)
     _second_kernel = _njit(cache=True)(_second_kernel)
     _COMPILED = True
