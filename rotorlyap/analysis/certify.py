@@ -19,11 +19,11 @@ region, so that a user gets the largest certificate without choosing (where the 
 blade is unstable only the quadratic function is tried: it says why nothing can be certified).
 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
-message says so. With ``verify=True`` the same function is also *proved* by ball arithmetic
+message says so. With ``verify=True`` the same function is also *proved* from enclosures
 (:func:`rotorlyap.analysis.proof.prove_blade`: Taylor models of the equations in float balls and
 a branch and bound over the band, issue 41): the result carries a
 :class:`~rotorlyap.methods.proof.Proof` with the bound and start regions that follow from the
-theorem for the model as enclosed, usually smaller than the numerical ones. In forward flight a
+theorem for the model as enclosed, at most the numerical ones. In forward flight a
 proof needs a steady motion with a residual near round-off, so ``verify=True`` first refines the
 periodic motion by shooting (:func:`rotorlyap.model.steady.refine_motion`) and computes both
 certificates about it.
@@ -185,7 +185,7 @@ class Certificate:
         lines.append(f"  stays within: {fmt(self.bound_per_hinge)}")
         if self.proof is not None:
             if self.proof.proved:
-                lines += [f"  proved (ball arithmetic): start within {fmt(self._per_hinge(self.proof.min_lambda0))}",
+                lines += [f"  proved (Taylor models, branch and bound): start within {fmt(self._per_hinge(self.proof.min_lambda0))}",
                           f"  proved: stays within {fmt(self._per_hinge(self.proof.A))}"]
             else:
                 lines.append(f"  not proved: {self.proof.message}")
@@ -223,7 +223,8 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     Q : array_like, optional
         Weight of the quadratic function (default: the identity in scaled coordinates).
     verify : bool
-        Also prove the certificate by ball arithmetic (:func:`rotorlyap.analysis.proof.prove_blade`,
+        Also prove the certificate (:func:`rotorlyap.analysis.proof.prove_blade`: Taylor models
+        and a branch and bound over the band,
         up to the numerical bound; seconds in hover, tens of seconds in forward flight); in forward flight
         the periodic motion is first refined by shooting (module docstring). The prover handles
         the quadratic function: with ``verify=True``, ``"auto"`` means ``"quadratic"``.
@@ -320,7 +321,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     family, res, fun, reach, cand = best
     proof = None
     if verify and fun is not None:
-        report("proof (ball arithmetic)")
+        report("proof (Taylor models, branch and bound)")
         proof = prove_blade(fun, cand.bound if cand.certified else A_quadratic)
     return Certificate(certified=cand.certified, mu=mu, condition=condition, trim=trim, growth_rate=growth,
                        bound=cand.bound, start_region=cand.start_region, scales=a, result=res,
