@@ -393,6 +393,18 @@ def _monomials(b, order, parent, var, xc, xw, pm, pr, bm, br):
             bm[j], br[j] = _ball_mul(bm[parent[j]], br[parent[j]], xc[b, v], xw[b, v])
 
 
+def _derivative_ball(b, lo, hi, cm, cr, src, tgt, mul, xm, xr):
+    """The ball of one derivative of box ``b``'s polynomial: ``sum_q c[src_q] mul_q x[tgt_q]`` over
+    the terms ``lo <= q < hi`` (coefficients ``cm``, ``cr``; monomials ``xm``, ``xr`` at the
+    centre or over the box), one ball sum at a time."""
+    sm, sr = 0.0, 0.0
+    for q in range(lo, hi):
+        am, ar = _ball_mul(cm[b, src[q]], cr[b, src[q]], mul[q], 0.0)
+        tm_, tr_ = _ball_mul(am, ar, xm[tgt[q]], xr[tgt[q]])
+        sm, sr = _ball_add(sm, sr, tm_, tr_)
+    return sm, sr
+
+
 def _bound_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart, out_m, out_r, out_g):
     """Per box ``b``: the ball of ``H`` at the centre (``out_m``, ``out_r``) and floats ``>= |dH/dx_i|``
     over the box (``out_g``): the monomials by one ball product each (parent times a variable, in
@@ -413,11 +425,7 @@ def _bound_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart, 
         out_m[b] = sm
         out_r[b] = sr
         for i in range(m):
-            sm, sr = 0.0, 0.0
-            for q in range(gstart[i], gstart[i + 1]):
-                am, ar = _ball_mul(cm[b, gsrc[q]], cr[b, gsrc[q]], gmul[q], 0.0)
-                tm_, tr_ = _ball_mul(am, ar, bm[gtgt[q]], br[gtgt[q]])
-                sm, sr = _ball_add(sm, sr, tm_, tr_)
+            sm, sr = _derivative_ball(b, gstart[i], gstart[i + 1], cm, cr, gsrc, gtgt, gmul, bm, br)
             out_g[b, i] = np.nextafter(abs(sm) + sr, np.inf)
 
 
@@ -435,18 +443,10 @@ def _second_kernel(cm, cr, xc, xw, order, parent, var, gsrc, gtgt, gmul, gstart,
     for b in range(B):
         _monomials(b, order, parent, var, xc, xw, pm, pr, bm, br)
         for i in range(m):
-            sm, sr = 0.0, 0.0
-            for q in range(gstart[i], gstart[i + 1]):
-                am, ar = _ball_mul(cm[b, gsrc[q]], cr[b, gsrc[q]], gmul[q], 0.0)
-                tm_, tr_ = _ball_mul(am, ar, pm[gtgt[q]], pr[gtgt[q]])
-                sm, sr = _ball_add(sm, sr, tm_, tr_)
+            sm, sr = _derivative_ball(b, gstart[i], gstart[i + 1], cm, cr, gsrc, gtgt, gmul, pm, pr)
             out_g[b, i] = np.nextafter(abs(sm) + sr, np.inf)
         for p in range(P):
-            sm, sr = 0.0, 0.0
-            for q in range(hstart[p], hstart[p + 1]):
-                am, ar = _ball_mul(cm[b, hsrc[q]], cr[b, hsrc[q]], hmul[q], 0.0)
-                tm_, tr_ = _ball_mul(am, ar, bm[htgt[q]], br[htgt[q]])
-                sm, sr = _ball_add(sm, sr, tm_, tr_)
+            sm, sr = _derivative_ball(b, hstart[p], hstart[p + 1], cm, cr, hsrc, htgt, hmul, bm, br)
             out_hm[b, p] = sm
             out_hr[b, p] = sr
 
@@ -457,6 +457,7 @@ try:
     _ball_mul = _njit(cache=True)(_ball_mul)
     _ball_add = _njit(cache=True)(_ball_add)
     _monomials = _njit(cache=True)(_monomials)
+    _derivative_ball = _njit(cache=True)(_derivative_ball)
     _bound_kernel = _njit(cache=True)(_bound_kernel)
     _second_kernel = _njit(cache=True)(_second_kernel)
     _COMPILED = True
