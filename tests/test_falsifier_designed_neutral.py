@@ -1,5 +1,5 @@
 """The falsifier on the neutral-C.G. hover certificate of the default ``certify`` (the augmented
-energy): :mod:`falsifier_designed`."""
+energy), as the book ships it (``book/certificates/hover_neutral.json``): :mod:`falsifier_designed`."""
 
 import pytest
 

@@ -25,7 +25,7 @@ from rotorlyap.figures.export import figure_csv  # noqa: E402
 
 @pytest.fixture(scope="module")
 def data():
-    case = dataclasses.replace(chapter.CASES[0], function="quadratic")
+    case = dataclasses.replace(chapter.CASES[0], function="quadratic", file=None)
     return chapter.large_disturbances([case], workers=2)
 
 

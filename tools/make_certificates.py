@@ -1,6 +1,8 @@
 """Make the certificate files the book ships and verifies (README, "Certificates as files").
 
-Usage: python tools/make_certificates.py [MU ...]   (default: 0.1 0.2 0.25)
+Usage: python tools/make_certificates.py [CASE ...]
+(CASE: an advance ratio, or ``forward``, ``neutral`` or ``backward`` for a Table I hover;
+default: every file the book ships, the three hovers and mu = 0.1, 0.2 and 0.25)
 
 For each advance ratio, the default ``rotorlyap.certify`` of the trimmed helicopter (the Table I
 blade in the forward-flight model, forward C.G.: ``BladeParameters.flight_case("forward")``) is
@@ -9,8 +11,17 @@ equations to round-off, as ``rotorlyap.verify`` checks) and saved as
 ``book/certificates/forward_mu<100 mu>.json``. Its design (the augmented energy
 in forward flight) takes minutes and its start radius depends on the last bits of the
 floating-point environment, so it is made once, here, and committed; chapter 11 and the tests
-verify each file from nothing (``rotorlyap.verify``) in every run, on any machine. Run it in the
-ordinary environment; the progress of each design goes to standard error.
+verify each file from nothing (``rotorlyap.verify``) in every run, on any machine.
+
+For each Table I hover, the default ``certify(BladeParameters.table_i(cg), 0.0,
+condition="none")`` (the paper's controls; the augmented energy, designed on the shell of the
+band) is saved as ``book/certificates/hover_<cg>.json``. Its design takes half a minute to a
+minute, and the backward C.G.'s start radius depends on the last bits of the floating-point
+environment (its design program works at the edge of feasibility); made once here, each file is
+verified by chapter 11 and attacked by the falsifier in every test run instead of being designed
+again by both.
+
+Run it in the ordinary environment; the progress of each design goes to standard error.
 """
 
 from __future__ import annotations
@@ -25,21 +36,45 @@ from rotorlyap.progress import Lines, listening
 FOLDER = Path(__file__).resolve().parents[1] / "book" / "certificates"
 
 
-def path_for(mu: float) -> Path:
-    """The file of the certificate at ``mu``: ``forward_mu010.json`` for 0.1."""
-    return FOLDER / f"forward_mu{round(100 * mu):03d}.json"
+#: The Table I hovers whose default certificate the book ships as a file.
+HOVERS = ("forward", "neutral", "backward")
+
+#: The advance ratios of the trimmed helicopter's files.
+ADVANCE_RATIOS = (0.1, 0.2, 0.25)
+
+
+def path_for(case: float | str) -> Path:
+    """The file of a case: ``forward_mu010.json`` for the advance ratio 0.1, ``hover_forward.json``
+    for the forward C.G.'s hover."""
+    if isinstance(case, str):
+        return FOLDER / f"hover_{case}.json"
+    return FOLDER / f"forward_mu{round(100 * case):03d}.json"
+
+
+def _case(word: str) -> float | str:
+    if word in HOVERS:
+        return word
+    try:
+        return float(word)
+    except ValueError:
+        raise SystemExit(f"make_certificates: a case is an advance ratio or one of {', '.join(HOVERS)}, "
+                         f"got {word!r}") from None
 
 
 def main(argv: list[str]) -> int:
-    mus = [float(v) for v in argv] or [0.1, 0.2, 0.25]
+    cases = [_case(v) for v in argv] or [*HOVERS, *ADVANCE_RATIOS]
     FOLDER.mkdir(parents=True, exist_ok=True)
-    for mu in mus:
+    for case in cases:
         start = time.perf_counter()
-        with listening(Lines(sys.stderr, prefix=f"  mu = {mu:g}: ")):
-            cert = certify(BladeParameters.flight_case("forward"), mu, refine=True)
-        cert.save(path_for(mu))
-        print(f"mu = {mu:g}: {cert.function}, certified {cert.certified}, A = {cert.bound:.4g}, "
-              f"lambda0 = {cert.start_region:.4g}, {time.perf_counter() - start:.0f} s -> {path_for(mu).name}")
+        name = f"{case} C.G. hover" if isinstance(case, str) else f"mu = {case:g}"
+        with listening(Lines(sys.stderr, prefix=f"  {name}: ")):
+            if isinstance(case, str):
+                cert = certify(BladeParameters.table_i(case), 0.0, condition="none")
+            else:
+                cert = certify(BladeParameters.flight_case("forward"), case, refine=True)
+        cert.save(path_for(case))
+        print(f"{name}: {cert.function}, certified {cert.certified}, A = {cert.bound:.4g}, "
+              f"lambda0 = {cert.start_region:.4g}, {time.perf_counter() - start:.0f} s -> {path_for(case).name}")
     return 0
 
 

@@ -37,7 +37,9 @@ NaN and infinities are not allowed), arrays as nested JSON lists:
     (``interpolation`` "constant" or "hermite", ``psi``, ``P_grid`` and ``dP_grid`` (K, 6, 6), its
     diagnostics and the Floquet monodromy matrix); or ``"energy"`` / ``"polynomial"`` with the
     basis described (``harmonics``, ``degrees``, for the energy ``energy_reference`` H_ref in J),
-    its ``names`` and ``coefficients``, and the design's numbers (``design``).
+    its ``names`` and ``coefficients``, and the design's numbers (``design``, for the reader, not
+    checked: the start radius and bound it was made for, its rounds and constraints, and ``tried``,
+    the scenario program's attempts ``[lam, A, designed]`` in order).
 ``claims``
     ``rule = "sound"``, the bound ``A``, the ``level`` c, ``lambda0`` per azimuth ``2 pi j / n``
     (scaled norm), the ``period``, and for the reader the ``band_max_dW`` the engine found and the
@@ -214,7 +216,8 @@ def _designed_json(fun: DesignedFunction) -> dict:
             "degrees": sorted({_degree(n) for n in monomials}), "names": names,
             "coefficients": _floats(bf.coefficients),
             "design": {"lam": float(d.lam), "A": float(d.A), "margin": float(d.margin), "feasible": bool(d.feasible),
-                       "rounds": int(d.rounds), "n_constraints": int(d.n_constraints)}}
+                       "rounds": int(d.rounds), "n_constraints": int(d.n_constraints),
+                       "tried": [[float(lam), float(A), bool(ok)] for lam, A, ok in d.tried]}}
     if fun.family == "energy":
         data["energy_reference"] = energy_reference(fun.blade, fun.steady, scales=fun.scales)
     return data
