@@ -19,11 +19,14 @@ region, so that a user gets the largest certificate without choosing (where the 
 blade is unstable only the quadratic function is tried: it says why nothing can be certified).
 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
-message says so. With ``verify=True`` the same function is also *proved* from enclosures
-(:func:`rotorlyap.analysis.proof.prove_blade`: Taylor models of the equations in float balls and
-a branch and bound over the band, issue 41): the result carries a
-:class:`~rotorlyap.methods.proof.Proof` with the bound and start regions that follow from the
-theorem for the model as enclosed, at most the numerical ones. In forward flight a
+message says so. With ``verify=True`` the function of the certificate returned is also *proved*
+from enclosures (:func:`prove_certificate`: :func:`rotorlyap.analysis.proof.prove_blade` for the
+quadratic function, :func:`rotorlyap.analysis.proof.prove_designed` for a designed function that
+is a quadratic form in hover; Taylor models of the equations in float balls and a branch and
+bound over the band, issue 41): the result carries a :class:`~rotorlyap.methods.proof.Proof` with
+the bound and start regions that follow from the theorem for the model as enclosed, at most the
+numerical ones, and a :class:`ProvedPart` saying what is proved as fractions of the numerical
+certificate, or why nothing is (a function no prover encloses). In forward flight a
 proof needs a steady motion with a residual near round-off, so ``verify=True`` first refines the
 periodic motion by shooting (:func:`rotorlyap.model.steady.refine_motion`) and computes both
 certificates about it.
