@@ -321,8 +321,9 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
                         "energy, the larger certificate; tens of seconds), quadratic (seconds, the linear "
                         "range), energy (the augmented energy), polynomial")
     c.add_argument("--verify", action="store_true",
-                   help="also prove the certificate by ball arithmetic (rotorlyap.certify(verify=True)): "
-                        "seconds in hover, minutes in forward flight; adds 'proof' to the JSON")
+                   help="also prove the certificate's own function by ball arithmetic (rotorlyap.certify("
+                        "verify=True)): seconds in hover, minutes in forward flight; adds 'proof' and "
+                        "'proved_part' (what is proved, or why nothing is) to the JSON")
     c.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
                    help="also draw the certified start region and bound per hinge (deg, deg/s)")
     c.add_argument("--save", type=Path, default=None, metavar="FILE.json",
@@ -639,7 +640,9 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
         ``growth_rate_per_rev``; ``trim`` (controls and shaft tilt in deg, ``CT_over_sigma``);
         ``message`` (which says "numerical certificate" where one was given); with ``verify=True``
         ``proof``: ``proved``, ``bound``, ``level``, ``start_region`` (scaled norm) and per hinge,
-        ``n_intervals``, ``message``.
+        ``n_intervals``, ``message`` (where a prover took the function), and ``proved_part``:
+        ``function``, ``proved``, ``method``, ``bound``, ``start_region``, ``bound_fraction``,
+        ``start_fraction`` (of the numerical certificate; null where nothing was certified) and ``not_proved`` (why, where nothing is).
     """
     import numpy as np
 
@@ -678,6 +681,15 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
             "bound_per_hinge": _per_hinge(cert.proof.A, cert.scales, omega),
             "n_intervals": int(cert.proof.n_intervals),
             "message": cert.proof.message}}),
+        **({} if cert.proved_part is None else {"proved_part": {
+            "function": cert.proved_part.function,
+            "proved": bool(cert.proved_part.proved),
+            "method": cert.proved_part.method,
+            "bound": _sig(cert.proved_part.bound),
+            "start_region": _sig(cert.proved_part.start_region),
+            "bound_fraction": _sig(cert.proved_part.bound_fraction) if math.isfinite(cert.proved_part.bound_fraction) else None,
+            "start_fraction": _sig(cert.proved_part.start_fraction) if math.isfinite(cert.proved_part.start_fraction) else None,
+            "not_proved": cert.proved_part.not_proved}}),
     }
 
 
@@ -686,10 +698,7 @@ def _certify(args) -> int:
 
     from .analysis.certify import certify
 
-    function = "quadratic" if args.verify and args.function == "auto" else args.function
-    if args.verify and function != "quadratic":
-        raise ValueError(f"--verify proves the quadratic function only; --function {function} gives a "
-                         "numerical certificate (drop --verify, or use --function quadratic)")
+    function = args.function
     params, case = _blade(args.params, args.cg)
     scales = None if args.scales is None else np.radians(args.scales)
     print(f"certifying: {case['params']}, cg={case['cg']}, mu={args.mu:g}, {args.condition} ...",

@@ -220,3 +220,15 @@ def test_the_box_bounds_contain_the_polynomial_and_its_gradient():
             h = np.sum(c.mid * mult * np.prod(x[:, None, :] ** dE, axis=-1), axis=1)
             slack = 1e-12 * (1 + np.abs(h))
             assert np.all((hess[:, p].lower() - slack <= h) & (h <= hess[:, p].upper() + slack))
+
+
+def test_the_split_by_share_never_proves_beyond_the_closed_form(monkeypatch):
+    """The other split rule (:data:`rotorlyap.methods.band.SPLIT_BY_SHARE`) chooses only where a box
+    is cut: the rotated system is proved within, never beyond, its closed-form bound with it too."""
+    import rotorlyap.methods.band as band
+
+    monkeypatch.setattr(band, "SPLIT_BY_SHARE", True)
+    system, exact = _rotated_cubic(1.0)
+    proof = _prove(system, 2.0 * exact)
+    assert proof.proved
+    assert 0.85 * exact <= proof.A < exact

@@ -165,24 +165,22 @@ def test_certify_prints_the_certificate_per_hinge(capsys):
     assert all(significant_digits_at_most(v) for v in numbers)
 
 
-def test_certify_refuses_to_prove_a_designed_function(capsys):
-    """--verify proves the quadratic function only: with --function energy the command says so
-    and exits 1 before any work."""
-    assert main(["certify", "--function", "energy", "--verify"]) == 1
-    err = capsys.readouterr().err
-    assert "--verify proves the quadratic function only" in err and "certifying" not in err
-
-
 def test_certify_verify_adds_the_proof(capsys):
-    """certify --verify (hover): the JSON has 'proof', proved, with a bound and start region inside
-    the numerical certificate's, per hinge in the same units."""
-    assert main(["certify", "--mu", "0", "--n-psi", "4", "--n-sphere", "16", "--verify"]) == 0
+    """certify --verify (hover, the quadratic function): the JSON has 'proof', proved, with a bound
+    and start region inside the numerical certificate's, per hinge in the same units, and
+    'proved_part': the function proved and its fractions of the numerical certificate."""
+    assert main(["certify", "--mu", "0", "--n-psi", "4", "--n-sphere", "16", "--function", "quadratic",
+                 "--verify"]) == 0
     data = json.loads(capsys.readouterr().out)
     proof = data["proof"]
     assert proof["proved"] is True and "ball arithmetic" in proof["kind"]
     assert 0.0 < proof["start_region"] < proof["bound"] <= data["bound"]
     assert proof["bound_per_hinge"]["flap"]["deg"] == pytest.approx(2.0 * proof["bound"], rel=1e-3)
     assert proof["n_intervals"] == 1
+    part = data["proved_part"]
+    assert part["function"] == "quadratic" and part["proved"] is True and part["not_proved"] == ""
+    assert part["bound"] == proof["bound"] and 0 < part["bound_fraction"] <= 1
+    assert part["start_fraction"] == pytest.approx(proof["start_region"] / data["start_region"], rel=1e-3)
 
 
 # ---------------------------------------------------------------------- sweep

@@ -340,11 +340,13 @@ def test_prove_quadratic_rejects_bad_input():
 
 @pytest.mark.parametrize("cg", ["forward", "neutral", "backward"])
 def test_every_table_i_hover_is_proved_within_its_numerical_certificate(cg):
-    """certify(verify=True) in hover: a proof exists, its bound and start region lie inside the
-    numerical certificate's, and the float W' is negative at 2000 states sampled on the proved band."""
+    """certify(verify=True) of the quadratic function in hover: a proof exists, its bound and start
+    region lie inside the numerical certificate's, and the float W' is negative at 2000 states
+    sampled on the proved band."""
     from rotorlyap import certify
 
-    cert = certify(BladeParameters.table_i(cg), 0.0, verify=True)
+    cert = certify(BladeParameters.table_i(cg), 0.0, function="quadratic", verify=True)
+    assert cert.proved_part.function == "quadratic" and cert.proved_part.proved
     proof = cert.proof
     assert cert.certified and proof.proved
     assert 0 < proof.A <= cert.bound and 0 < proof.min_lambda0 <= cert.start_region
@@ -373,7 +375,7 @@ def test_a_forward_flight_case_is_proved():
     from rotorlyap.analysis.functions import quadratic_function
     from rotorlyap.model.steady import refine_motion
 
-    cert = certify(BladeParameters.flight_case("forward"), 0.1, verify=True)
+    cert = certify(BladeParameters.flight_case("forward"), 0.1, function="quadratic", verify=True)
     proof = cert.proof
     assert cert.certified and proof.proved
     assert 0 < proof.A <= cert.bound

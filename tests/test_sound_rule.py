@@ -67,8 +67,9 @@ def test_sound_rule_rejects_bad_options():
     s = mathieu_duffing()
     with pytest.raises(ValueError, match="rule must be one of"):
         technical_stability(s.f, s.W, 1.0, scales=[1.0, 1.0], rule="lenient")
-    with pytest.raises(ValueError, match="only with rule='sound'"):
-        technical_stability(s.f, s.W, 1.0, scales=[1.0, 1.0], rule="paper", w_matrix=lambda p: np.eye(2))
+    with pytest.raises(ValueError, match="not used by the practical reading"):
+        technical_stability(s.f, s.W, 1.0, scales=[1.0, 1.0], rule="paper", w_matrix=lambda p: np.eye(2),
+                            test_directions=np.eye(2))
     with pytest.raises(ValueError, match="one square matrix per azimuth"):
         technical_stability(s.f, s.W, 1.0, scales=[1.0, 1.0], w_matrix=lambda p: np.eye(2))
     with pytest.raises(ValueError, match="practical reading"):

@@ -19,11 +19,14 @@ region, so that a user gets the largest certificate without choosing (where the 
 blade is unstable only the quadratic function is tried: it says why nothing can be certified).
 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
-message says so. With ``verify=True`` the same function is also *proved* from enclosures
-(:func:`rotorlyap.analysis.proof.prove_blade`: Taylor models of the equations in float balls and
-a branch and bound over the band, issue 41): the result carries a
-:class:`~rotorlyap.methods.proof.Proof` with the bound and start regions that follow from the
-theorem for the model as enclosed, at most the numerical ones. In forward flight a
+message says so. With ``verify=True`` the function of the certificate returned is also *proved*
+from enclosures (:func:`prove_certificate`: :func:`rotorlyap.analysis.proof.prove_blade` for the
+quadratic function, :func:`rotorlyap.analysis.proof.prove_designed` for a designed function that
+is a quadratic form in hover; Taylor models of the equations in float balls and a branch and
+bound over the band, issue 41): the result carries a :class:`~rotorlyap.methods.proof.Proof` with
+the bound and start regions that follow from the theorem for the model as enclosed, at most the
+numerical ones, and a :class:`ProvedPart` saying what is proved as fractions of the numerical
+certificate, or why nothing is (a function no prover encloses). In forward flight a
 proof needs a steady motion with a residual near round-off, so ``verify=True`` first refines the
 periodic motion by shooting (:func:`rotorlyap.model.steady.refine_motion`) and computes both
 certificates about it.
@@ -53,7 +56,8 @@ from .nonlinear_functions import FAMILIES, designed_function
 from .proof import prove_blade
 from .stability import blade_stability
 
-__all__ = ["FUNCTIONS", "Candidate", "Certificate", "certify", "function_start_set"]
+__all__ = ["FUNCTIONS", "Candidate", "Certificate", "ProvedPart", "certify", "function_start_set",
+           "prove_certificate"]
 
 FUNCTIONS = ("auto", "quadratic") + FAMILIES
 """The ``function`` choices of :func:`certify` (module docstring)."""
@@ -75,6 +79,51 @@ class Candidate:
     message: str
     tried: tuple = ()
     start_set: tuple = ()
+
+
+@dataclass(frozen=True)
+class ProvedPart:
+    """What ``verify=True`` proved of the certificate :func:`certify` returns (its own function).
+
+    Attributes
+    ----------
+    function : str
+        The family of the function proved: the certificate's own (``"quadratic"``, ``"energy"``
+        or ``"polynomial"``).
+    proved : bool
+        True if a bound was proved (``bound > 0``).
+    method : str
+        The prover, e.g. ``"Taylor models and branch and bound (prove_blade)"``; empty where no
+        prover could take the function.
+    bound : float
+        The proved bound ``A``, scaled norm (0 if nothing is proved).
+    start_region : float
+        The smallest proved start radius over the period, scaled norm (0 if nothing).
+    bound_fraction : float
+        ``bound`` over the numerical certificate's bound (0 where nothing is proved; NaN where
+        nothing was certified numerically).
+    start_fraction : float
+        ``start_region`` over the numerical certificate's start region (as ``bound_fraction``).
+    not_proved : str
+        Empty where something is proved; else why nothing is (the prover's message, or why no
+        prover takes the function).
+    """
+
+    function: str
+    proved: bool
+    method: str
+    bound: float
+    start_region: float
+    bound_fraction: float
+    start_fraction: float
+    not_proved: str = ""
+
+    def __str__(self) -> str:
+        if not self.proved:
+            return f"{self.function} function not proved: {self.not_proved}"
+        return (f"{self.function} function proved ({self.method}): bound {self.bound:.3g} "
+                f"({self.bound_fraction:.3g} of the numerical), start region {self.start_region:.3g} "
+                f"({self.start_fraction:.3g} of the numerical)")
 
 
 @dataclass(frozen=True)
@@ -107,8 +156,9 @@ class Certificate:
     message : str
         What was certified, or why nothing was.
     proof : Proof or None
-        ``verify=True``: the proved certificate (bound, level, start radii per azimuth interval,
-        or why nothing was proved); None otherwise, and where no quadratic function exists.
+        ``verify=True``: the proof of the certificate's own function (bound, level, start radii
+        per azimuth interval, or why nothing was proved); None otherwise, and where no prover takes
+        the function (see ``proved_part``).
     function : str
         The family of the function the certificate rests on (``"quadratic"``, ``"energy"`` or
         ``"polynomial"``).
@@ -122,6 +172,9 @@ class Certificate:
         certifies, measured along the signed hinge axes at every start azimuth
         (:func:`rotorlyap.methods.start_set.start_set`); it holds the ball ``start_region`` and
         reaches further along most hinges. None where nothing is certified.
+    proved_part : ProvedPart or None
+        ``verify=True``: which part of this certificate is proved (the bound, start region and
+        their fractions of the numerical ones, the prover), or why nothing is; None otherwise.
     """
 
     certified: bool
@@ -139,6 +192,7 @@ class Certificate:
     candidates: tuple = ()
     lyapunov: object | None = None
     start_set: StartSet | None = None
+    proved_part: ProvedPart | None = None
 
     def _per_hinge(self, radius) -> dict:
         omega = self.trim.params.rotor_speed
@@ -183,12 +237,13 @@ class Certificate:
         if self.start_set is not None:
             lines.append(f"  start set, each hinge alone: {fmt(self.start_set_per_hinge)}")
         lines.append(f"  stays within: {fmt(self.bound_per_hinge)}")
-        if self.proof is not None:
-            if self.proof.proved:
-                lines += [f"  proved (Taylor models, branch and bound): start within {fmt(self._per_hinge(self.proof.min_lambda0))}",
-                          f"  proved: stays within {fmt(self._per_hinge(self.proof.A))}"]
+        part = self.proved_part
+        if part is not None:
+            if part.proved:
+                lines += [f"  proved ({part.method}): start within {fmt(self._per_hinge(part.start_region))}",
+                          f"  proved: stays within {fmt(self._per_hinge(part.bound))}"]
             else:
-                lines.append(f"  not proved: {self.proof.message}")
+                lines.append(f"  not proved: {part.not_proved}")
         return "\n".join(lines)
 
 
@@ -223,11 +278,15 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     Q : array_like, optional
         Weight of the quadratic function (default: the identity in scaled coordinates).
     verify : bool
-        Also prove the certificate (:func:`rotorlyap.analysis.proof.prove_blade`: Taylor models
-        and a branch and bound over the band,
-        up to the numerical bound; seconds in hover, tens of seconds in forward flight); in forward flight
-        the periodic motion is first refined by shooting (module docstring). The prover handles
-        the quadratic function: with ``verify=True``, ``"auto"`` means ``"quadratic"``.
+        Also prove the certificate returned, its own function, up to its numerical bound
+        (:func:`prove_certificate`: the quadratic function by
+        :func:`rotorlyap.analysis.proof.prove_blade`, a designed function that is a quadratic form
+        in hover by :func:`rotorlyap.analysis.proof.prove_designed`, both Taylor models and a
+        branch and bound over the band; seconds in hover, tens of seconds in forward flight); the
+        result's ``proved_part`` says what is proved, or why nothing is (a designed function with
+        weight on the energy, or in forward flight: no prover encloses it). In forward flight the
+        periodic motion is first refined by shooting (module docstring). The candidates are those
+        of ``verify=False``.
     refine : bool, optional
         In forward flight, refine the trim's periodic motion by shooting
         (:func:`rotorlyap.model.steady.refine_motion`, a residual near round-off) and certify about
@@ -246,8 +305,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     Raises
     ------
     ValueError
-        Unknown ``condition`` or ``function``, ``verify=True`` with a designed family, bad ``mu``
-        (from the trim).
+        Unknown ``condition`` or ``function``, bad ``mu`` (from the trim).
     rotorlyap.errors.TrimError
         If the trim does not converge.
     """
@@ -255,9 +313,6 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         raise ValueError(f"condition must be one of {TRIM_TARGETS}, got {condition!r}")
     if function not in FUNCTIONS:
         raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
-    if verify and function in FAMILIES:
-        raise ValueError(f"verify=True proves the quadratic function only; function={function!r} "
-                         "gives a numerical certificate (use verify=False, or function='quadratic')")
     report(f"trim ({condition}, mu = {float(mu):g})")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
@@ -274,7 +329,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float)
     A_quadratic = DEFAULT_A if A is None else float(A)
     if function == "auto":
-        families = ("quadratic",) if verify or growth >= 0.0 else ("quadratic", "energy")
+        families = ("quadratic",) if growth >= 0.0 else ("quadratic", "energy")
     else:
         families = (function,)
 
@@ -319,14 +374,96 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
                                 tuple(float(v) for v in reach.axis_reach) if reach is not None else ())))
     best = max(tried, key=lambda item: (item[4].certified, item[4].start_region))
     family, res, fun, reach, cand = best
-    proof = None
-    if verify and fun is not None:
-        report("proof (Taylor models, branch and bound)")
-        proof = prove_blade(fun, cand.bound if cand.certified else A_quadratic)
+    proof, part = None, None
+    if verify:
+        report(f"proof of the {family} function (Taylor models, branch and bound)")
+        proof, part = prove_certificate(fun, family, cand.bound, cand.start_region, cand.certified,
+                                        A_requested=A_quadratic)
     return Certificate(certified=cand.certified, mu=mu, condition=condition, trim=trim, growth_rate=growth,
                        bound=cand.bound, start_region=cand.start_region, scales=a, result=res,
                        message=cand.message, proof=proof, function=family,
-                       candidates=tuple(item[4] for item in tried), lyapunov=fun, start_set=reach)
+                       candidates=tuple(item[4] for item in tried), lyapunov=fun, start_set=reach,
+                       proved_part=part)
+
+
+#: The provers :func:`prove_certificate` names.
+_METHODS = {"quadratic": "Taylor models and branch and bound (prove_blade)",
+            "designed": "Taylor models and branch and bound (prove_designed)"}
+
+
+def prove_certificate(fun, family: str, bound: float, start_region: float, certified: bool, *,
+                      A_requested: float = DEFAULT_A) -> tuple[Proof | None, ProvedPart]:
+    """Prove a certificate's own function up to its numerical bound: what ``certify(verify=True)`` does.
+
+    The quadratic function by :func:`rotorlyap.analysis.proof.prove_blade`; a designed function
+    (``"energy"``, ``"polynomial"``) that is a quadratic form of the state in hover by
+    :func:`rotorlyap.analysis.proof.prove_designed`; any other designed function (a weight on the
+    energy, on a cubic or quartic monomial, or coefficients that depend on the azimuth in forward
+    flight) is not taken by a prover, and the result says so.
+
+    Parameters
+    ----------
+    fun : QuadraticFunction or DesignedFunction or None
+        The certificate's function (None where none was built).
+    family : str
+        ``"quadratic"``, ``"energy"`` or ``"polynomial"``.
+    bound, start_region : float
+        The numerical certificate's bound and smallest start radius (scaled norm).
+    certified : bool
+        Whether the numerical certificate holds. Where it does not, the quadratic function is
+        proved up to ``A_requested`` (a proof may exist where the search failed); a designed
+        function is not tried.
+    A_requested : float
+        The bound asked of the quadratic function (used where nothing is certified).
+
+    Returns
+    -------
+    proof : Proof or None
+        The prover's result, None where no prover takes the function.
+    part : ProvedPart
+        What is proved, as fractions of the numerical certificate, or why nothing is.
+
+    Raises
+    ------
+    ValueError
+        An unknown family.
+    """
+    from .proof import designed_quadratic_form, prove_designed
+
+    if family not in ("quadratic",) + FAMILIES:
+        raise ValueError(f"family must be one of {('quadratic',) + FAMILIES}, got {family!r}")
+
+    def unproved(why: str, method: str = "") -> tuple[None, ProvedPart]:
+        nan = float("nan") if not certified else 0.0
+        return None, ProvedPart(family, False, method, 0.0, 0.0, nan, nan, why)
+
+    if fun is None:
+        return unproved("no function was built (the linearised blade is unstable, or the design found none)")
+    if family == "quadratic":
+        method = _METHODS["quadratic"]
+        proof = prove_blade(fun, bound if certified else A_requested)
+    else:
+        if not certified:
+            return unproved(f"the {family} function certified nothing numerically: there is no bound to prove")
+        if not fun.autonomous:
+            return unproved(f"the designed {family} function's coefficients depend on the azimuth (forward "
+                            "flight); prove_designed encloses autonomous quadratic forms only")
+        try:
+            designed_quadratic_form(fun)
+        except ValueError as exc:
+            return unproved(f"the designed {family} function is not a quadratic form of the state ({exc}); "
+                            "the provers enclose quadratic forms only")
+        method = _METHODS["designed"]
+        proof = prove_designed(fun, bound)
+    ok = bool(proof.proved) and proof.A > 0
+    if certified:
+        fa = proof.A / bound if ok and bound > 0 else 0.0
+        fl = proof.min_lambda0 / start_region if ok and start_region > 0 else 0.0
+    else:
+        fa = fl = float("nan")
+    return proof, ProvedPart(family, ok, method, float(proof.A) if ok else 0.0,
+                             float(proof.min_lambda0) if ok else 0.0, float(fa), float(fl),
+                             "" if ok else proof.message)
 
 
 def _start_set(fun, res: TechnicalStabilityResult, family: str) -> StartSet | None:

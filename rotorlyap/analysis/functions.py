@@ -538,6 +538,24 @@ class QuadraticFunction:
         inv = 1.0 / self.scales
         return self.solution.P(psi) * inv[:, None] * inv[None, :]
 
+    def w_matrix(self, scales) -> Callable[[np.ndarray], np.ndarray]:
+        """``S(psi) = diag(a) P(psi) diag(a)``: the matrix of ``W = y^T S y`` in the coordinates
+        ``y = x / a`` of a norm with scales ``a`` (which :func:`rotorlyap.technical_stability`
+        takes as ``w_matrix`` and finds by itself: the closed-form extrema of ``W`` on spheres).
+
+        Parameters
+        ----------
+        scales : array_like
+            The norm's scales ``a_i``, 6 positive numbers.
+
+        Returns
+        -------
+        callable
+            ``S(psi)``, shape ``psi.shape + (6, 6)``.
+        """
+        a = _check_scales(scales)
+        return lambda psi: a[:, None] * self.P(psi) * a[None, :]
+
     def dP(self, psi) -> np.ndarray:
         """``P'(psi)`` in state units, shape ``psi.shape + (6, 6)``."""
         inv = 1.0 / self.scales

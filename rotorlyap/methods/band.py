@@ -231,6 +231,14 @@ def _exponents_of_degree(n: int, d: int) -> list:
     return out
 
 
+SPLIT_BY_SHARE = False
+"""Split a box along the coordinate with the largest share of its bound's excess, the remainder's
+and the quadratic part's included (True), or of ``H``'s mean-value term alone (False, the default).
+Measured (2026-12-05, :func:`rotorlyap.analysis.proof.prove_blade`'s defaults): True raises the
+trimmed helicopter's mu = 0.1 proof from 0.60 to 0.64 of the numerical bound, leaves the Table I
+hovers at 0.90, 0.90, 0.95, and lowers the Puma hover's (``tests/test_c81_model.py``) from 0.87
+and 0.80 (built-in section, C81 table) to 0.83 and 0.68: not better everywhere, so off."""
+
 STEPS = (1.0, 0.95, 0.9, 0.85, 0.8, 0.75, 0.7, 0.65, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.02, 0.01)
 """The bounds :func:`largest_bound` tries, as fractions of the cap (the largest bound asked, or the
 smallest radius of a box centre where the polynomial part was found not negative), in order."""
@@ -669,17 +677,29 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
             since = count
             if rho <= 0:
                 break
+        # each coordinate's share of the bound's excess over the box (the split direction): sigma H's
+        # mean-value term sigma_hi |dH/dx_i| w_i; for the free coordinates of v also the first-order
+        # change of the remainder's term and of the quadratic part across the box (floats: a choice
+        # of direction, nothing rests on it); for sigma also |H(centre)| w (the product sigma H)
+        share = grad * xw
+        if n > 1 and SPLIT_BY_SHARE:
+            share = share * hi[:, -1:]
+            Rk = R[k]
+            sens = 2.0 * (np.einsum("bjl,bj->bl", np.abs(bp.S.mid[k]), np.einsum("bjl,bl->bj", Rk, v_mag))
+                          + np.einsum("bjl,bj->bl", Rk, Sv_mag)) + 2.0 * np.abs(n0)[:, None] * v_mag
+            full = np.arange(n - 1)[None, :] + (np.arange(n - 1)[None, :] >= (face // 2)[:, None])
+            share[:, :n - 1] += np.take_along_axis(sens, full, axis=1) * xw[:, :n - 1]
+            share[:, -1] += np.abs(centre.mid) * xw[:, -1]
         open_ = ~(bound < 0)
         tiny = open_ & (np.max(xw, axis=1) < 1e-9)
         if np.any(tiny):  # boxes too small to split: the bound stays below them
             rmin_b = (Balls(lo[tiny, -1]) * Balls(np.sum(mig[tiny] ** 2, axis=1)).sqrt()).lower()
             rho = min(rho, float(np.nextafter(np.min(rmin_b), -np.inf)))
             open_ &= ~tiny
-        k, face, lo, hi, grad, xw = k[open_], face[open_], lo[open_], hi[open_], grad[open_], xw[open_]
-        # split each open box at the middle of the coordinate that contributes most to the
-        # mean-value term of H
+        k, face, lo, hi, share = k[open_], face[open_], lo[open_], hi[open_], share[open_]
+        # split each open box at the middle of the coordinate with the largest share
         if k.size:
-            dim = np.argmax(grad * xw, axis=1)
+            dim = np.argmax(share, axis=1)
             rows = np.arange(k.size)
             cut = 0.5 * (lo[rows, dim] + hi[rows, dim])
             lo2, hi1 = lo.copy(), hi.copy()
