@@ -39,11 +39,12 @@ FOLDER = Path(__file__).resolve().parents[1] / "book" / "certificates"
 def falsify(cg: str) -> None:
     """Attack the default hover certificate of one Table I case as the book ships it. It must be
     the augmented energy's, with at least ten times the start region of the quadratic function
-    (the other candidate of ``function="auto"``, computed here)."""
+    (the other candidate of ``function="auto"``, computed here in the file's norm)."""
     path = FOLDER / f"hover_{cg}.json"
     stored = read_certificate(path)
     assert stored.family == "energy", f"{path.name}: {stored.family}"
-    quadratic = certify(BladeParameters.table_i(cg), 0.0, condition="none", function="quadratic")
+    quadratic = certify(BladeParameters.table_i(cg), 0.0, condition="none", function="quadratic",
+                        scales=stored.scales)
     assert quadratic.certified and stored.lambda0.min() >= 10.0 * quadratic.start_region
     falsify_file(path, evaluations=EVALUATIONS, n_azimuths=1)
 

@@ -14,8 +14,10 @@ floating-point environment, so it is made once, here, and committed; chapter 11 
 verify each file from nothing (``rotorlyap.verify``) in every run, on any machine.
 
 For each Table I hover, the default ``certify(BladeParameters.table_i(cg), 0.0,
-condition="none")`` (the paper's controls; the augmented energy, designed on the shell of the
-band) is saved as ``book/certificates/hover_<cg>.json``. Its design takes half a minute to a
+condition="none", scales=...)`` (the paper's controls; the augmented energy, designed on the
+shell of the band; the norm scales of chapter 11's case, the default ones but at the backward
+C.G., ``rotorlyap.figures.large_disturbances.BACKWARD_SCALES``) is saved as
+``book/certificates/hover_<cg>.json``. Its design takes half a minute to a
 minute, and the backward C.G.'s start radius depends on the last bits of the floating-point
 environment (its design program works at the edge of feasibility); made once here, each file is
 verified by chapter 11 and attacked by the falsifier in every test run instead of being designed
@@ -51,6 +53,14 @@ def path_for(case: float | str) -> Path:
     return FOLDER / f"forward_mu{round(100 * case):03d}.json"
 
 
+def hover_scales(cg: str):
+    """The norm scales of a Table I hover's certificate: chapter 11's for the case
+    (:data:`rotorlyap.figures.large_disturbances.CASES`; None: the default scales)."""
+    from rotorlyap.figures.large_disturbances import CASES
+
+    return next(c.scales for c in CASES if c.mu == 0.0 and c.blade == ("table_i", cg))
+
+
 def _case(word: str) -> float | str:
     if word in HOVERS:
         return word
@@ -69,7 +79,7 @@ def main(argv: list[str]) -> int:
         name = f"{case} C.G. hover" if isinstance(case, str) else f"mu = {case:g}"
         with listening(Lines(sys.stderr, prefix=f"  {name}: ")):
             if isinstance(case, str):
-                cert = certify(BladeParameters.table_i(case), 0.0, condition="none")
+                cert = certify(BladeParameters.table_i(case), 0.0, condition="none", scales=hover_scales(case))
             else:
                 cert = certify(BladeParameters.flight_case("forward"), case, refine=True)
         cert.save(path_for(case))

@@ -27,7 +27,7 @@ from ..analysis.certify import Candidate, certify, function_start_set
 from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
 from ..analysis.region import SLICES, StableRegion, stable_region
 from ..analysis.sweep import process_map
-from ..conventions import HINGES, STATE_NAMES
+from ..conventions import DEFAULT_SCALES, HINGES, STATE_NAMES
 from ..methods.sampling import unit_sphere_points
 from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
@@ -61,6 +61,12 @@ class Case:
         from it instead of designed again (a design that takes minutes, or whose last bits depend
         on the machine, made once by ``tools/make_certificates.py``); the quadratic function
         beside it is computed (``function`` is then ``"quadratic"``).
+    scales : tuple of float or None
+        The certificates' norm scales ``a_i`` (rad and rad/rad; None: the default,
+        :data:`rotorlyap.conventions.DEFAULT_SCALES`): the quadratic function is computed, and
+        the file's certificate must have been made, in this norm. The yardstick is measured in
+        the default norm whatever these are, so that every case is held against the same
+        simulated amplitudes.
     """
 
     key: str
@@ -70,12 +76,27 @@ class Case:
     condition: str
     function: str = "auto"
     file: str | None = None
+    scales: tuple[float, ...] | None = None
 
     def params(self) -> BladeParameters:
         """The blade of the case."""
         make, cg = self.blade
         return getattr(BladeParameters, make)(cg)
 
+
+#: The backward C.G.'s norm scales: the default ones (:data:`rotorlyap.conventions.DEFAULT_SCALES`)
+#: with the pitch angle's scale BACKWARD_PITCH_FACTOR times and the pitch rate's
+#: BACKWARD_PITCH_RATE_FACTOR times larger. Its simulated region (chapter 11's yardstick) reaches
+#: at least 40 deg of pitch and 990 deg/s of pitch rate, but 0.58 deg of flap and 1.5 deg of lag;
+#: in the default norm (a unit is 2 deg of flap and 1 deg of pitch) the designed certificate's
+#: start set reaches along the pitch angle 0.17 % of that region, its least share. Measured
+#: 2026-12-05 with the default certify (the augmented energy): pitch x10 and pitch rate x4 reach
+#: 2.2 % along the pitch angle; pitch x30 and pitch rate x10 certify no augmented energy at all
+#: (the design program meets no start radius) and a quadratic function 20 times smaller.
+BACKWARD_PITCH_FACTOR = 10.0
+BACKWARD_PITCH_RATE_FACTOR = 4.0
+BACKWARD_SCALES: tuple[float, ...] = tuple(
+    float(v) for v in DEFAULT_SCALES * np.array([1.0, 1.0, BACKWARD_PITCH_FACTOR, 1.0, 1.0, BACKWARD_PITCH_RATE_FACTOR]))
 
 CASES: tuple[Case, ...] = (
     # every designed certificate of the chapter is a file (book/certificates/, made once by
@@ -91,7 +112,7 @@ CASES: tuple[Case, ...] = (
     Case("forward", "forward C.G., hover", ("table_i", "forward"), 0.0, "none", "quadratic", "hover_forward.json"),
     Case("neutral", "neutral C.G., hover", ("table_i", "neutral"), 0.0, "none", "quadratic", "hover_neutral.json"),
     Case("backward", "backward C.G., hover", ("table_i", "backward"), 0.0, "none", "quadratic",
-         "hover_backward.json"),
+         "hover_backward.json", BACKWARD_SCALES),
     Case("mu01", "trimmed, mu = 0.1", ("flight_case", "forward"), 0.1, "propulsive", "quadratic",
          "forward_mu010.json"),
     Case("mu02", "trimmed, mu = 0.2", ("flight_case", "forward"), 0.2, "propulsive", "quadratic",
@@ -160,8 +181,10 @@ class CaseResult:
 
     @property
     def simulated(self) -> np.ndarray:
-        """The yardstick along each component, the smaller sign: deg and deg/s, (6,)."""
-        return self.per_component(1.0) * self.region.component_extent
+        """The yardstick along each component, the smaller sign: deg and deg/s, (6,) (measured in
+        the region's own norm, whatever the certificates' scales)."""
+        deg = np.degrees(np.asarray(self.region.scales, dtype=float)) * self.region.component_extent
+        return deg * np.r_[np.ones(3), np.full(3, self.rotor_speed)]
 
     def reach(self, function: str) -> np.ndarray:
         """Start ball (``lambda0``) of ``function`` over the yardstick, per component, -, (6,) (NaN:
@@ -169,7 +192,7 @@ class CaseResult:
         c = self.candidate(function)
         if c is None:
             return np.full(6, np.nan)
-        return c.start_region / self.region.component_extent
+        return self.per_component(c.start_region) / self.simulated
 
     def set_reach(self, function: str) -> np.ndarray:
         """Start set of ``function`` (:attr:`rotorlyap.analysis.certify.Candidate.start_set`, along each
@@ -177,7 +200,7 @@ class CaseResult:
         c = self.candidate(function)
         if c is None or not c.start_set:
             return np.full(6, np.nan)
-        return np.asarray(c.start_set) / self.region.component_extent
+        return self.per_component(np.asarray(c.start_set)) / self.simulated
 
     def limit(self, function: str) -> tuple[float, float]:
         """For a designed function: the start radius of the design the certificate rests on (the
@@ -348,7 +371,7 @@ def _compute(task: tuple[str, Case, Path | None]):
     kind, case, folder = task
     if kind == "region":
         return stable_region(case.params(), case.mu, condition=case.condition)
-    cert = certify(case.params(), case.mu, condition=case.condition, function=case.function)
+    cert = certify(case.params(), case.mu, condition=case.condition, function=case.function, scales=case.scales)
     candidates = tuple(cert.candidates)
     fun, level, bound, lam0, chosen, certified = (cert.lyapunov, cert.result.level if cert.certified else math.nan,
                                                   cert.bound, cert.start_region, cert.function, cert.certified)
@@ -387,6 +410,11 @@ def _from_file(path: Path, case: Case):
             or stored.condition != case.condition:
         raise ValueError(f"{path}: a certificate of another case (mu = {stored.mu:g}, {stored.condition}, "
                          f"C.G. at {stored.params.cg_position:g} c) than {case.label}")
+    scales = DEFAULT_SCALES if case.scales is None else np.asarray(case.scales, dtype=float)
+    if not np.array_equal(np.asarray(stored.scales, dtype=float), scales):
+        raise ValueError(f"{path}: a certificate in another norm (scales {np.asarray(stored.scales).tolist()} rad, "
+                         f"rad/rad) than {case.label}'s ({scales.tolist()}): remake it with "
+                         "tools/make_certificates.py")
     return stored, verify(path)
 
 
@@ -497,6 +525,10 @@ class LargeDisturbances:
             q = r.candidate("quadratic")
             e = r.candidate("energy")
             f[f"ch11_{k}_chosen"] = _NAMES[r.chosen]
+            if r.case.scales is not None:  # the case's own norm, in words: "pitch angle 10 times, ..."
+                factor = np.asarray(r.case.scales, dtype=float) / DEFAULT_SCALES
+                f[f"ch11_{k}_scales"] = ", ".join(f"the {_HINGE_WORDS[i]}'s {factor[i]:g} times"
+                                                  for i in range(6) if factor[i] != 1.0)
             if r.verification:
                 f[f"ch11_{k}_verified"] = "verified" if r.verification.startswith("VERIFIED") else "refused"
             f[f"ch11_{k}_sim_flap"] = _sig(r.simulated[0])
@@ -651,8 +683,9 @@ def figure_slices(data: LargeDisturbances, keys=("forward", "mu01", "backward"))
         chosen = r.candidate(r.chosen)
         for ax, name in zip(row, ("flap-lag", "flap-pitch")):
             s = r.region.slices[name]
-            di, dj = np.degrees(r.scales[s.i]), np.degrees(r.scales[s.j])
-            X, Y = np.meshgrid(s.axis_j * dj, s.axis_i * di)
+            gi, gj = np.degrees(r.region.scales[s.i]), np.degrees(r.region.scales[s.j])  # the yardstick's norm
+            di, dj = np.degrees(r.scales[s.i]), np.degrees(r.scales[s.j])  # the certificate's
+            X, Y = np.meshgrid(s.axis_j * gj, s.axis_i * gi)
             ax.contourf(X, Y, s.stable.astype(float), levels=[-0.5, 0.5, 1.5], colors=["white", "#CDE8D8"])
             ax.contour(X, Y, s.stable.astype(float), levels=[0.5], colors=["#009E73"], linewidths=1.0)
             if name in r.set_slices and chosen is not None and chosen.certified:
