@@ -336,7 +336,7 @@ class HoverTrimData:
         lines += [
             _line("sweep collective (deg):", np.round(np.degrees(self.collective), 2)),
             _line("sweep theta (deg):     ", np.round(np.degrees(self.equilibrium[:, 2]), 3)),
-            "weight %.1f N; |thrust - weight| < 1e-6 N for every trim: %s; C_T = %.5f, lambda_0 = %.4f" % (
+            "weight %.1f N; |thrust - weight| < 1e-6 N for every trim: %s; C_T = %.5f, inflow ratio lambda_i = %.4f" % (
                 self.weight, self.max_trim_error < 1e-6, self.thrust_coefficient, self.inflow),
             "pitch axis %.3f c, aerodynamic centre %.3f c" % (self.pitch_axis, self.aerodynamic_centre),
         ]
