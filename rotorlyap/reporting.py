@@ -112,9 +112,10 @@ def decade_above(value: float) -> float:
 def percent(fraction: float, digits: int = 1) -> str:
     """A relative change or share, given as a fraction, as printable per cent text.
 
-    A value that would print as zero at ``digits`` decimals, but is not zero, is printed as
-    the bound it lies below (``"< 0.05 %"`` for one decimal), so the text never claims "0.0 %"
-    for a change that was merely too small to show.
+    A value that would print as zero at ``digits`` decimals is printed as the bound it lies
+    below (``"< 0.05 %"`` for one decimal), so the text never claims "0.0 %" for a change that
+    was merely too small to show. An exact zero prints the same bound: a change that is zero on
+    one machine and 1e-16 on another is the same result (the rule of this module's docstring).
 
     Parameters
     ----------
@@ -126,8 +127,8 @@ def percent(fraction: float, digits: int = 1) -> str:
     Returns
     -------
     str
-        ``"1.2 %"``; ``"< 0.05 %"`` for a non-zero magnitude below half the last digit
-        (``"> -0.05 %"`` if negative); ``"0 %"`` for an exact zero; ``"nan"`` if not finite.
+        ``"1.2 %"``; ``"< 0.05 %"`` for a magnitude below half the last digit, zero included
+        (``"> -0.05 %"`` if negative); ``"nan"`` if not finite.
 
     Raises
     ------
@@ -137,19 +138,17 @@ def percent(fraction: float, digits: int = 1) -> str:
     Examples
     --------
     >>> percent(0.0123), percent(0.0004), percent(0.0004, 2), percent(0.0)
-    ('1.2 %', '< 0.05 %', '0.04 %', '0 %')
+    ('1.2 %', '< 0.05 %', '0.04 %', '< 0.05 %')
     """
     if not isinstance(digits, (int, np.integer)) or digits < 0:
         raise ValueError(f"digits must be a non-negative integer, got {digits!r}")
     value = 100.0 * float(fraction)
     if not math.isfinite(value):
         return "nan"
-    if value == 0.0:
-        return "0 %"
     half = 0.5 * 10.0 ** (-int(digits))
     if abs(value) < half:
         bound = f"{half:.{int(digits) + 1}f}"
-        return f"< {bound} %" if value > 0 else f"> -{bound} %"
+        return f"> -{bound} %" if value < 0 else f"< {bound} %"
     return f"{value:.{int(digits)}f} %"
 
 

@@ -82,7 +82,7 @@ def test_steps_summary_holds_every_step_number(res):
     j_min, j_max = int(np.argmin(res.lambda0)), int(np.argmax(res.lambda0))
     assert lines[4] == "step 5: lambda0 from %.4f (psi = %.0f deg) to %.4f (psi = %.0f deg)" % (
         res.lambda0[j_min], np.degrees(res.psi[j_min]), res.lambda0[j_max], np.degrees(res.psi[j_max]))
-    assert lines[5].endswith("stable at %d of 24 azimuths" % res.stable.sum())
+    assert lines[5].endswith("step 6 passes at %d of 24 azimuths" % res.stable.sum())
     assert "%.2e" % res.max_dW.max() in lines[5]
 
 
