@@ -25,7 +25,8 @@ import math
 
 import numpy as np
 
-__all__ = ["ROUNDOFF_FLOOR", "Rounded", "decade_above", "format_small", "format_small_array"]
+__all__ = ["ROUNDOFF_FLOOR", "Rounded", "count", "decade_above", "format_small", "format_small_array",
+           "percent"]
 
 ROUNDOFF_FLOOR = 1e-10
 """Threshold below which a residual or relative error is round-off, not a result.
@@ -106,6 +107,80 @@ def decade_above(value: float) -> float:
     if not (math.isfinite(value) and value > 0):
         raise ValueError(f"decade_above needs a positive finite error estimate, got {value!r}")
     return float(10.0 ** math.floor(math.log10(value) + 1.0))
+
+
+def percent(fraction: float, digits: int = 1) -> str:
+    """A relative change or share, given as a fraction, as printable per cent text.
+
+    A value that would print as zero at ``digits`` decimals is printed as the bound it lies
+    below (``"< 0.05 %"`` for one decimal), so the text never claims "0.0 %" for a change that
+    was merely too small to show. An exact zero prints the same bound: a change that is zero on
+    one machine and 1e-16 on another is the same result (the rule of this module's docstring).
+
+    Parameters
+    ----------
+    fraction : float
+        The quantity as a fraction (0.012 is 1.2 %).
+    digits : int
+        Decimals of the per cent value printed.
+
+    Returns
+    -------
+    str
+        ``"1.2 %"``; ``"< 0.05 %"`` for a magnitude below half the last digit, zero included
+        (``"> -0.05 %"`` if negative); ``"nan"`` if not finite.
+
+    Raises
+    ------
+    ValueError
+        If ``digits`` is not a non-negative integer.
+
+    Examples
+    --------
+    >>> percent(0.0123), percent(0.0004), percent(0.0004, 2), percent(0.0)
+    ('1.2 %', '< 0.05 %', '0.04 %', '< 0.05 %')
+    """
+    if not isinstance(digits, (int, np.integer)) or digits < 0:
+        raise ValueError(f"digits must be a non-negative integer, got {digits!r}")
+    value = 100.0 * float(fraction)
+    if not math.isfinite(value):
+        return "nan"
+    half = 0.5 * 10.0 ** (-int(digits))
+    if abs(value) < half:
+        bound = f"{half:.{int(digits) + 1}f}"
+        return f"> -{bound} %" if value < 0 else f"< {bound} %"
+    return f"{value:.{int(digits)}f} %"
+
+
+def count(n: int, noun: str, plural: str | None = None) -> str:
+    """A count with its noun in the number the count needs: ``count(1, "advance ratio")`` is
+    ``"1 advance ratio"``, ``count(3, "advance ratio")`` is ``"3 advance ratios"``.
+
+    Parameters
+    ----------
+    n : int
+        The count (a non-negative integer).
+    noun : str
+        The singular noun, or a noun phrase whose first word is the noun
+        (``"advance ratio of the grid"`` puts the plural on ``ratio``: pass ``plural``
+        for any phrase where the plural is not the singular plus "s").
+    plural : str, optional
+        The plural form; default ``noun + "s"``.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is negative or not an integer.
+
+    Examples
+    --------
+    >>> count(0, "azimuth"), count(1, "azimuth"), count(2, "motion", "motions")
+    ('0 azimuths', '1 azimuth', '2 motions')
+    """
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 0:
+        raise ValueError(f"count needs a non-negative integer, got {n!r}")
+    word = noun if int(n) == 1 else (plural if plural is not None else noun + "s")
+    return f"{int(n)} {word}"
 
 
 class Rounded(float):

@@ -203,6 +203,32 @@ def test_most_fields_rest_on_an_assumption(forward):
     assert data.markdown().splitlines()[0] == "| field | value | unit | source or reason |"
 
 
+def test_the_assumptions_table_says_what_a_field_left_unset_means_not_none(forward):
+    """Chapter 4 printed "`inflow_ratio` | None | - | assumed: None = ..." (issue 42): a field
+    left at None is printed as what it means, and no source keeps the word None."""
+    data = bm.assumption_data(forward)
+    text = data.markdown()
+    assert "None" not in text
+    rows = {r[0]: r for r in data.rows}
+    assert rows["`inflow_ratio`"][1] == "not given: computed (momentum theory)"
+    assert rows["`inflow_ratio`"][3] == "assumed: momentum theory with thrust = weight"
+    assert rows["`collective`"][1] == "not given: computed (hover trim)"
+
+
+def test_printed_sources_name_authors_and_year_not_bibliography_keys(forward):
+    """Chapter 4's tables printed raw bib keys ("Abbott1959: ...") (issue 42); every key the
+    recorded sources use is translated, and every translated key exists in references.bib."""
+    import pathlib
+    import re
+
+    text = bm.airfoil_table_data(forward).markdown() + bm.assumption_data(forward).markdown()
+    assert "Abbott and von Doenhoff (1959): cm_ac = -0.014" in text
+    assert not re.search(r"\b[A-Z][A-Za-z]+[0-9]{4}\b", text), re.findall(r"\b[A-Z][A-Za-z]+[0-9]{4}\b", text)
+    bib = (pathlib.Path(__file__).resolve().parents[1] / "references.bib").read_text()
+    for key in bm.REFERENCE_NAMES:
+        assert "{" + key + "," in bib, key
+
+
 def test_airfoil_table_gives_angles_in_degrees_and_slopes_per_degree(forward):
     data = bm.airfoil_table_data(forward)
     rows = {r[0]: r for r in data.rows}

@@ -64,7 +64,7 @@ def test_the_verdicts_use_the_trims_own_hover_state():
     assert blade_floquet(BladeParameters.flight_case("backward"), 0.0).exponents.real.max() > 0
     assert not scan.stable[1:].any()
     assert np.all(scan.category[1:] == 4)  # no quadratic function: marked, not called unstable
-    assert "no quadratic function at 1 advance ratios" in flight.verdict_summary(scan)
+    assert "no quadratic function at 1 advance ratio)" in flight.verdict_summary(scan)
 
 
 def test_forensic_sides_and_codes():

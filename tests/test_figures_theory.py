@@ -82,7 +82,7 @@ def test_steps_summary_holds_every_step_number(res):
     j_min, j_max = int(np.argmin(res.lambda0)), int(np.argmax(res.lambda0))
     assert lines[4] == "step 5: lambda0 from %.4f (psi = %.0f deg) to %.4f (psi = %.0f deg)" % (
         res.lambda0[j_min], np.degrees(res.psi[j_min]), res.lambda0[j_max], np.degrees(res.psi[j_max]))
-    assert lines[5].endswith("stable at %d of 24 azimuths" % res.stable.sum())
+    assert lines[5].endswith("step 6 passes at %d of 24 azimuths" % res.stable.sum())
     assert "%.2e" % res.max_dW.max() in lines[5]
 
 
@@ -204,8 +204,16 @@ def _convergence(A, lam_mean, n_sphere=(0, 16, 64)):
 def test_convergence_deviation_ignores_the_structured_directions_only_run():
     conv = _convergence(A=[0.5, 0.404, 0.4], lam_mean=[0.1, 0.3, 0.3])
     assert conv.largest_deviation == pytest.approx(0.01)
-    assert conv.facts() == {"ch2_conv_dev": 1.0}
+    assert conv.facts() == {"ch2_conv_dev": "1.00 %"}
     assert conv.summary().splitlines()[-1] == "largest deviation from the finest, refined, n_sphere >= 16: 1.00 %"
+
+
+def test_a_convergence_deviation_below_the_printed_digits_is_not_printed_as_zero():
+    """Chapter 2 printed "0.00 %" (issue 42): a deviation that rounds to zero is stated as the
+    bound it lies below."""
+    conv = _convergence(A=[0.5, 0.40001, 0.4], lam_mean=[0.1, 0.3, 0.3])
+    assert conv.facts() == {"ch2_conv_dev": "< 0.005 %"}
+    assert conv.summary().endswith("n_sphere >= 16: < 0.005 %")
 
 
 def test_convergence_summary_prints_each_row_to_four_decimals():

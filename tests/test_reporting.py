@@ -63,3 +63,36 @@ def test_rounded_prints_the_digits_kept_and_glue_drops_a_fake_decimal():
     assert glue_value(2.0) == 2.0 and isinstance(glue_value(2.0), float)  # 2.0 may be round(x, 1)
     assert isinstance(glue_value(Rounded(20.0, 1)), Rounded)
     assert glue_value(True) is True and glue_value("0.6") == "0.6"
+
+
+def test_a_percentage_below_the_printed_precision_is_printed_as_the_bound_it_lies_below():
+    """Chapters 2 and 7 printed "changes by at most 0.0 %" for a change that was not zero
+    (issue 42): a change too small for the printed digits is stated as "< 0.05 %"."""
+    from rotorlyap.reporting import percent
+
+    assert percent(0.0123) == "1.2 %"
+    assert percent(0.0004) == "< 0.05 %"
+    assert percent(0.0004, 2) == "0.04 %"
+    assert percent(0.00004, 2) == "< 0.005 %"
+    assert percent(-0.0004) == "> -0.05 %"
+    assert percent(-0.0123) == "-1.2 %"
+    assert percent(0.0) == percent(1e-16) == "< 0.05 %"  # the same on every machine
+    assert percent(0.0005) == "0.1 %"  # 0.05 % itself rounds to one decimal (banker's or not, not zero)
+    assert percent(float("nan")) == "nan"
+    with pytest.raises(ValueError, match="digits"):
+        percent(0.1, -1)
+
+
+def test_a_count_agrees_with_its_noun():
+    """Chapter 7 printed "at 1 advance ratio(s) of the grid" (issue 42)."""
+    from rotorlyap.reporting import count
+
+    assert count(1, "advance ratio") == "1 advance ratio"
+    assert count(0, "advance ratio") == "0 advance ratios"
+    assert count(3, "advance ratio") == "3 advance ratios"
+    assert count(2, "C.G. case", "C.G. cases") == "2 C.G. cases"
+    assert count(1, "child", "children") == "1 child"
+    assert count(4, "child", "children") == "4 children"
+    for bad in (-1, 1.5, True):
+        with pytest.raises(ValueError, match="non-negative integer"):
+            count(bad, "azimuth")

@@ -49,6 +49,7 @@ from __future__ import annotations
 
 import inspect
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, fields, replace
 from typing import Any, Sequence
@@ -865,7 +866,7 @@ class AngleOfAttackData:
         every case, as chapter 3 prints them."""
         lines = [f"stations r/R: {np.round(self.stations, 3)}"]
         for (mu, psi), a in zip(self.cases, self.alpha_stations):
-            lines.append("mu = %.2f, psi = %3.0f deg: alpha = " % (mu, psi) + str(np.round(a, 1)))
+            lines.append("mu = %.2f, psi = %3.0f deg: AoA (deg) = " % (mu, psi) + str(np.round(a, 1)))
         return "\n".join(lines)
 
     def facts(self) -> dict[str, Any]:
@@ -1323,9 +1324,50 @@ def table_i_rows(params: BladeParameters) -> list[tuple[str, str, str, str]]:
     return rows
 
 
+NOT_GIVEN = {
+    "wind_point": "not given: the aerodynamic centre",
+    "inflow_ratio": "not given: computed (momentum theory)",
+    "collective": "not given: computed (hover trim)",
+}
+"""What a field left at ``None`` means, as the assumptions table prints it (a printed ``None``
+says nothing to a reader)."""
+
+REFERENCE_NAMES = {
+    "AbbottEtAl1945": "Abbott, von Doenhoff and Stivers (1945)",
+    "Abbott1959": "Abbott and von Doenhoff (1959)",
+    "Hoerner1965": "Hoerner (1965)",
+    "JacobsClay1935": "Jacobs and Clay (1935)",
+    "Prouty1986": "Prouty (1986)",
+    "SheldahlKlimas1981": "Sheldahl and Klimas (1981)",
+    "ViternaCorrigan1982": "Viterna and Corrigan (1982)",
+}
+"""Bibliography keys that the package's recorded sources use, as the printed tables name them
+(authors and year; chapter 4 cites each entry in its text)."""
+
+
+def readable_source(source: str) -> str:
+    """A recorded source as a table prints it: bibliography keys become authors and year, and
+    an ``assumed: None ...`` prefix loses the ``None`` (the value column says what it means).
+
+    Examples
+    --------
+    >>> readable_source("assumed: None = momentum theory with thrust = weight")
+    'assumed: momentum theory with thrust = weight'
+    >>> readable_source("Abbott1959: cm_ac = -0.014")
+    'Abbott and von Doenhoff (1959): cm_ac = -0.014'
+    """
+    text = re.sub(r"^assumed: None(?:,| =) ", "assumed: ", source)
+    for key, name in REFERENCE_NAMES.items():
+        text = re.sub(rf"\b{key}\b", name, text)
+    return text
+
+
 def assumption_rows(params: BladeParameters) -> list[tuple[str, str, str, str]]:
-    """(field, value, unit, source) for every field whose source contains "assumed"."""
-    return [(f"`{name}`", format_value(value), unit, source)
+    """(field, value, unit, source) for every field whose source contains "assumed"; a value
+    left at ``None`` is printed as what it means (:data:`NOT_GIVEN`), sources by
+    :func:`readable_source`."""
+    return [(f"`{name}`", NOT_GIVEN.get(name, "not given") if value is None else format_value(value),
+             unit, readable_source(source))
             for name, value, unit, source in parameter_table(params) if "assumed" in source]
 
 
@@ -1408,7 +1450,7 @@ def airfoil_table_data(params: BladeParameters, airfoil: Any = NACA23012,
                        sources: Mapping[str, str] = NACA23012_SOURCES) -> AirfoilTableData:
     """The numbers of ``airfoil`` named in ``sources`` (default the NACA 23012 model and its
     attributions), and the airfoil of ``params``."""
-    return AirfoilTableData(rows=tuple(_airfoil_row(airfoil, n, s) for n, s in sources.items()),
+    return AirfoilTableData(rows=tuple(_airfoil_row(airfoil, n, readable_source(s)) for n, s in sources.items()),
                             blade_airfoil=params.airfoil.name,
                             aerodynamic_centre=params.airfoil.aerodynamic_centre, cm_ac=params.airfoil.cm_ac)
 
@@ -1588,7 +1630,7 @@ class DerivedTableData(HoverCasesData):
                 ("solidity $\\sigma = N c / (\\pi R)$", "-", *(round(d.solidity, 4) for d in q)),
                 ("hover thrust coefficient $C_T$", "-", *(round(d.thrust_coefficient, 5) for d in q)),
                 ("$C_T / \\sigma$", "-", *(round(d.ct_over_sigma, 4) for d in q)),
-                ("hover inflow ratio $\\lambda_0 = \\sqrt{C_T/2}$", "-", *(round(d.inflow_ratio, 4) for d in q)),
+                ("hover inflow ratio $\\lambda_i = \\sqrt{C_T/2}$", "-", *(round(d.inflow_ratio, 4) for d in q)),
                 ("trimmed collective $\\theta_0$", "deg", *(round(deg(d.collective), 2) for d in q)),
                 ("coning (flap) angle $\\beta$", "deg", *(round(deg(d.equilibrium[0]), 2) for d in q)),
                 ("lag angle $\\zeta$", "deg", *(round(deg(d.equilibrium[1]), 2) for d in q)),

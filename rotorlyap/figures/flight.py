@@ -33,6 +33,7 @@ from ..model.blade import Blade
 from ..model.compressibility import validity_map
 from ..model.forward_trim import forward_flight_trim
 from ..model.inflow import kx_factor
+from ..reporting import count
 from ..model.mass import mass_properties
 from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.steady import tabulate_motion
@@ -1153,8 +1154,8 @@ def verdict_summary(scan) -> str:
         lines.append(f"{label}; mu: {_fmt(scan.mu_values, 2)}")
         for i, case in enumerate(scan.cases):
             none = int((scan.category[c, i] == 4).all(axis=1).sum())
-            lines.append(f"  {case:8s} stable azimuths of {scan.psi.size}: {scan.stable[c, i].sum(axis=1)}"
-                         + (f"  (no quadratic function at {none} advance ratios)" if none else ""))
+            lines.append(f"  {case:8s} azimuths passing, of {scan.psi.size}: {scan.stable[c, i].sum(axis=1)}"
+                         + (f"  (no quadratic function at {count(none, 'advance ratio')})" if none else ""))
     return "\n".join(lines)
 
 

@@ -336,7 +336,7 @@ class HoverTrimData:
         lines += [
             _line("sweep collective (deg):", np.round(np.degrees(self.collective), 2)),
             _line("sweep theta (deg):     ", np.round(np.degrees(self.equilibrium[:, 2]), 3)),
-            "weight %.1f N; |thrust - weight| < 1e-6 N for every trim: %s; C_T = %.5f, lambda_0 = %.4f" % (
+            "weight %.1f N; |thrust - weight| < 1e-6 N for every trim: %s; C_T = %.5f, inflow ratio lambda_i = %.4f" % (
                 self.weight, self.max_trim_error < 1e-6, self.thrust_coefficient, self.inflow),
             "pitch axis %.3f c, aerodynamic centre %.3f c" % (self.pitch_axis, self.aerodynamic_centre),
         ]
@@ -1607,7 +1607,7 @@ class RegionsData:
         step 3 per ``mu``, and the cells with ``W' > 0`` on the requested sphere."""
         lines = [self.label, _line("  mu:", self.mu_values)]
         for k, case in enumerate(self.cases):
-            lines.append(_line(f"  {case:9s} stable azimuths:", self.stable[k].sum(axis=1),
+            lines.append(_line(f"  {case:9s} azimuths passing:", self.stable[k].sum(axis=1),
                                " A after step 3:", np.round(self.A_used[k], 3)))
         lines.append(_line("  cells with W' > 0 on the sphere (step 3 failed):", int((self.category == 3).sum()),
                            "of", self.category.size))
@@ -1935,7 +1935,7 @@ class HoverFlutterCheck:
     def summary(self) -> str:
         """The fluttering blade's growth rate (per rev, 0.001) and practical verdict."""
         return (f"{self.flutter_case} C.G. without pitch damping, hover: largest real part "
-                f"{self.flutter_growth_rate:+.3f}, practical: stable at {self.flutter_stable} of {self.n_psi} azimuths")
+                f"{self.flutter_growth_rate:+.3f}, practical (indicator): passes at {self.flutter_stable} of {self.n_psi} azimuths")
 
     def facts(self) -> dict:
         """``ch6_flut_re`` (signed text, per rev) and ``ch6_flut_stable`` (azimuths)."""
@@ -2132,7 +2132,7 @@ class SensitivityData:
         :func:`sensitivity_data`)."""
         lines = [_line("mu:", self.regions[0].mu_values),
                  "variant                        tests  hover lambda0  A after step 3 (per mu)            "
-                 "stable azimuths (per mu)"]
+                 "azimuths passing (per mu)"]
         for name, r, n in zip(self.names, self.regions, self.n_tests):
             lines.append(f"{name:30s} {n:4d}  {r.lambda0[0, 0].min():12.3f}  {np.round(r.A_used[0], 3)}  "
                          f"{r.stable[0].sum(axis=1)}")
@@ -2142,7 +2142,7 @@ class SensitivityData:
         r4 = self.variant("A = 4")
         ok4 = np.flatnonzero(r4.A_used[0] > 0)
         i4 = np.flatnonzero(r4.stable[0, 1:].any(axis=1)) + 1
-        lines.append(_line("A = 4: step 3 keeps A up to mu =", r4.mu_values[ok4[-1]], "; stable cells with mu > 0 at",
+        lines.append(_line("A = 4: step 3 keeps A up to mu =", r4.mu_values[ok4[-1]], "; passing cells with mu > 0 at",
                            [(float(r4.mu_values[i]), [int(v) for v in np.round(np.degrees(r4.psi[r4.stable[0, i]]))])
                             for i in i4],
                            "; lambda0 =", np.round(np.unique(r4.lambda0[0, 1:ok4[-1] + 1]), 3)))
@@ -2554,8 +2554,8 @@ def claims_table(convergence: ConvergenceData, w_spheres: WSpheresData, rate: Ra
          f"largest real part {flutter.flutter_growth_rate:+.3f}: {flutter.flutter_stable} of 72 azimuths)"),
         ("paper's Fig. 8: as mu grows, a region of instability appears first on the retreating side (stall flutter)",
          f"not reproduced: nothing certified at any mu ({int(reg_s.stable.sum())} certified cells)",
-         f"not reproduced: no azimuth stable from mu = {reg_p.mu_values[1]:g} on, for every C.G. "
-         f"({int(reg_p.stable[:, 1:].sum())} stable cells); with A = 4, {n4} of 72 azimuths "
+         f"not reproduced: no azimuth passes from mu = {reg_p.mu_values[1]:g} on, for every C.G. "
+         f"({int(reg_p.stable[:, 1:].sum())} passing cells); with A = 4, {n4} of 72 azimuths "
          f"at mu = {mu4:g} and none beyond",
          "{numref}`fig-regions-plane`, {numref}`fig-sensitivity`; per azimuth, W' > 0 on the sphere appears on both "
          f"sides at once ({adv1:.2f} of the advancing and {ret1:.2f} of the "

@@ -32,6 +32,7 @@ import numpy as np
 from ..methods.examples import PeriodicSystem, pulsed_growth
 from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
 from ..methods.simulation import simulate
+from ..reporting import percent
 from .style import finish, subplots
 
 if TYPE_CHECKING:
@@ -92,7 +93,7 @@ def steps_summary(result: TechnicalStabilityResult) -> str:
         "step 3: A = %.4f;  step 4: alpha = %.5f" % (result.A, result.alpha),
         "step 5: lambda0 from %.4f (psi = %.0f deg) to %.4f (psi = %.0f deg)" % (
             lam.min(), psi_deg[lam.argmin()], lam.max(), psi_deg[lam.argmax()]),
-        "step 6: largest W' on the shells: %.2e; stable at %d of %d azimuths" % (
+        "step 6: largest W' on the shells: %.2e; step 6 passes at %d of %d azimuths" % (
             np.max(result.max_dW), np.sum(result.stable), np.size(result.stable)),
     ])
 
@@ -616,7 +617,8 @@ class ConvergenceData:
 
     def summary(self) -> str:
         """The resolutions, ``A`` and mean ``lambda0`` with and without refinement (four
-        decimals), and :attr:`largest_deviation` in per cent (two decimals)."""
+        decimals), and :attr:`largest_deviation` in per cent (two decimals, :func:`rotorlyap.reporting.percent`:
+        a deviation below 0.005 % is printed as that bound)."""
         sampled = np.asarray(self.n_sphere)[np.asarray(self.n_sphere) > 0]
         lowest = int(sampled.min()) if sampled.size else 0
         return "\n".join([
@@ -625,13 +627,14 @@ class ConvergenceData:
             f"A (sampling only): {np.round(self.A_raw, 4)}",
             f"mean lambda0 (refined):       {np.round(self.lambda0_mean, 4)}",
             f"mean lambda0 (sampling only): {np.round(self.lambda0_mean_raw, 4)}",
-            "largest deviation from the finest, refined, n_sphere >= %d: %.2f %%"
-            % (lowest, 100 * self.largest_deviation),
+            "largest deviation from the finest, refined, n_sphere >= %d: %s"
+            % (lowest, percent(self.largest_deviation, 2)),
         ])
 
     def facts(self, prefix: str = "ch2") -> dict:
-        """``{prefix}_conv_dev``: :attr:`largest_deviation` in per cent, two decimals."""
-        return {f"{prefix}_conv_dev": round(100 * self.largest_deviation, 2)}
+        """``{prefix}_conv_dev``: :attr:`largest_deviation` as per cent text with its unit, two
+        decimals (``"0.31 %"``, or ``"< 0.005 %"`` below the printed precision)."""
+        return {f"{prefix}_conv_dev": percent(self.largest_deviation, 2)}
 
 
 def convergence_data(system: PeriodicSystem, A: float, n_sphere_values, *, n_psi: int = 24,
@@ -884,7 +887,7 @@ class RuleComparisonData:
         """Both verdicts, the certified azimuths and the motions' largest norm (rounded)."""
         idx = np.flatnonzero(self.paper.stable)
         deg = ", ".join("%.0f" % d for d in np.degrees(self.paper.psi[idx]))
-        return (f"paper's rule: {idx.size} of {self.paper.psi.size} azimuths certified "
+        return (f"paper's rule: {idx.size} of {self.paper.psi.size} azimuths pass (an indicator) "
                 f"(psi = {deg} deg)\n"
                 f"  lambda0 up to {self.paper.lambda0.max():.2f}; motions from 0.99 lambda0: "
                 f"largest ||x|| / A = {self.max_ratio:.2f}\n"

@@ -52,7 +52,7 @@ from ..model.blade import Blade
 from ..model.modes import derived_quantities
 from ..model.parameters import BladeParameters
 from ..model.steady import as_steady_motion, disturbed_rhs, periodic_motion, tabulate_motion
-from ..reporting import Rounded, decade_above, format_small, format_small_array
+from ..reporting import Rounded, count, decade_above, format_small, format_small_array, percent
 from .export import markdown_table
 from .style import (CATEGORY_COLORS, CATEGORY_HATCHES, CG_COLORS, CG_MARKERS, HATCH_COLOR, HATCH_LINEWIDTH,
                     HINGE_COLORS, SCAN_EXTRA_COLORS, SCAN_EXTRA_HATCHES, draw_categories, figure, finish,
@@ -596,6 +596,7 @@ class FloquetData:
             "ch7_flip_mu": float(sb.mu[j1]),
             "ch7_flip_m": round(float(m1.real), 3),
             "ch7_n_unstable_bwd": int(j_un.size),
+            "ch7_n_unstable_bwd_text": count(int(j_un.size), "advance ratio"),
             "ch7_bwd_sig_max": round(float(np.nanmax(sb.max_growth_rate)), 3),
             "ch7_bwd_sig0": round(float(sb.max_growth_rate[0]), 4),
             "ch7_bwd_sig_last": round(float(sb.max_growth_rate[-1]), 3),
@@ -1335,8 +1336,9 @@ class SearchCheck:
                                           self.n_stable.astype(int))])
 
     def facts(self) -> dict:
-        """The largest relative change of the smallest ``lambda0``, percent, one decimal."""
-        return {"ch7_conv": round(float(100 * max(self.relative_change)), 1)}
+        """The largest relative change of the smallest ``lambda0`` as per cent text with its unit,
+        one decimal (``"< 0.05 %"`` below the printed precision, :func:`rotorlyap.reporting.percent`)."""
+        return {"ch7_conv": percent(float(max(self.relative_change)), 1)}
 
 
 @dataclass(frozen=True)

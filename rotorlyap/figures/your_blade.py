@@ -50,6 +50,7 @@ __all__ = [
     "HarmonicData", "harmonic_data", "plot_harmonics",
     "BladeFile", "read_blade", "CertificateTable", "certificate_table",
     "SweepFigureData", "sweep_figure_data", "plot_sweep",
+    "mode_summary",
 ]
 
 LABELS: tuple[str, str] = ("Table I neutral", "variant")
@@ -793,3 +794,45 @@ def plot_sweep(data: SweepFigureData, *, x_label: str, series_label: str):
     ax2.set_ylim(bottom=0.0)
     ax1.legend(fontsize=8)
     return finish(fig)
+
+
+def mode_summary(data) -> str:
+    """The modes of a fan plot or of a Floquet sweep as chapter 9 prints them, in words.
+
+    The book keeps one symbol for one quantity: zeta is the lag angle and sigma the solidity,
+    so a mode's damping ratio and its growth rate are named, not given those symbols (the
+    ``summary`` methods of :mod:`rotorlyap.analysis.modes` print them as ``zeta`` and ``sigma``).
+
+    Parameters
+    ----------
+    data : rotorlyap.analysis.modes.FanData or rotorlyap.analysis.modes.FloquetModes
+        From :func:`rotorlyap.fan_plot` (hover modes against the rotor speed: frequency per rev
+        and damping ratio, three decimals) or :func:`rotorlyap.floquet_modes` (Floquet modes
+        against the advance ratio: frequency and growth rate per rev, three decimals).
+
+    Returns
+    -------
+    str
+        A title line, then one line per rotor speed or advance ratio.
+    """
+    if hasattr(data, "rotor_speed") and hasattr(data, "nominal_rotor_speed"):
+        lines = [f"hover modes {'with air' if data.air else 'in vacuum'} against rotor speed "
+                 f"(nominal {data.nominal_rotor_speed:.4g} rad/s): frequency, damping ratio"]
+        for i, omega in enumerate(data.rotor_speed):
+            if data.messages[i]:
+                lines.append(f"  {omega:8.4g} rad/s: not found ({data.messages[i]})")
+                continue
+            text = ", ".join(f"{n} {m.frequency:.3f}/rev, {m.damping_ratio:.3f}"
+                             for n, m in zip(data.names(i), data.modes[i]))
+            lines.append(f"  {omega:8.4g} rad/s: {text}")
+        return "\n".join(lines)
+    lines = [f"Floquet modes of the {data.condition} trim against the advance ratio: "
+             "frequency, growth rate (both per rev)"]
+    for i, mu in enumerate(data.mu):
+        if not data.found[i]:
+            lines.append(f"  mu = {mu:.4g}: not found ({data.messages[i]})")
+            continue
+        text = ", ".join(f"{n} {data.frequency[i, j]:.3f}, {data.growth_rate[i, j]:+.3f}"
+                         for j, n in enumerate(data.names))
+        lines.append(f"  mu = {mu:.4g}: {text}")
+    return "\n".join(lines)
