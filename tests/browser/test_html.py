@@ -229,15 +229,31 @@ COLLECT = r"""
 
   // template words in the text a reader sees (prose and printed outputs; not source code, code
   // literals or the API's signatures): "None" as a word, "(s)" glued to a noun
+  // "None" is Python's value printed where a word belongs unless it opens a sentence and is
+  // followed by more of it ("None of them", "None comes near"): a "None" in mid-sentence, or one
+  // that stands alone (a table cell, "None," or "None =") is a template word. The API's object
+  // descriptions (dl.py) document Python's None and are left out.
   const templateWords = [];
-  const codeLike = 'script, style, noscript, template, mjx-container, nav, .cell_input, code, kbd, samp, .sig, .headerlink';
+  const codeLike = 'script, style, noscript, template, mjx-container, nav, .cell_input, code, kbd, samp, .sig, .headerlink, dl.py';
+  const blockSel = 'p, li, td, th, dt, dd, figcaption, caption, h1, h2, h3, h4, h5, h6, pre, div';
   const tw2 = document.createTreeWalker(column, NodeFilter.SHOW_TEXT);
   for (let n = tw2.nextNode(); n; n = tw2.nextNode()) {
     const el = n.parentElement;
     if (!el || el.closest(codeLike) || !el.checkVisibility()) continue;
     if (el.closest('div.highlight, pre') && !el.closest('.cell_output, .output')) continue;  // code examples
     for (const m of n.data.matchAll(/\bNone\b|[A-Za-z]\(s\)/g)) {
-      templateWords.push(n.data.slice(Math.max(0, m.index - 40), m.index + 40).replace(/\s+/g, ' ').trim());
+      const shown = n.data.slice(Math.max(0, m.index - 40), m.index + 40).replace(/\s+/g, ' ').trim();
+      if (m[0] === 'None') {
+        const block = el.closest(blockSel) || column;
+        const r = document.createRange();
+        r.setStart(block, 0); r.setEnd(n, m.index);
+        const before = r.toString().trim();
+        const after = n.data.slice(m.index + 4);
+        const opensSentence = before === '' || /[.!?]["\u201d)]?$/.test(before);
+        const standsAlone = /^\s*([,;:=)\]]|$)/.test(after);
+        if (opensSentence && !standsAlone) continue;
+      }
+      templateWords.push(shown);
     }
   }
 
