@@ -16,7 +16,8 @@ import pytest
 
 import rotorlyap.figures as figures_pkg
 from rotorlyap.figures.style import (MIN_TEXT_PX, PAGE_WIDTH_PX, CATEGORY_COLORS, CATEGORY_HATCHES,
-                                     FigureLayoutError, check_legible, finish, max_width_in,
+                                     FigureLayoutError, check_legible, enlarge_small_text, finish,
+                                     max_width_in, use_retina_inline,
                                      shown_text_px, subplots)
 
 
@@ -37,8 +38,34 @@ def test_small_text_in_a_wide_figure_is_refused_with_the_fix():
     fig, ax = subplots(figsize=(14, 3))
     ax.plot([0, 1], [0, 1])
     ax.set_xlabel("azimuth (deg)", fontsize=8)
+    fig.tight_layout()
     with pytest.raises(FigureLayoutError, match=r"use at least .* pt here, or make the figure at most"):
-        finish(fig)
+        check_legible(fig)
+
+
+def test_finish_raises_small_text_to_the_rule_and_leaves_large_text():
+    fig, ax = subplots(figsize=(14, 3))
+    ax.plot([0, 1], [0, 1])
+    ax.set_xlabel("azimuth (deg)", fontsize=8)
+    ax.set_title("a title", fontsize=30)
+    finish(fig)
+    assert check_legible(fig) >= MIN_TEXT_PX - 1e-9
+    assert ax.xaxis.label.get_fontsize() > 8
+    assert ax.title.get_fontsize() == 30
+    # a figure already legible is not touched
+    fig2, ax2 = subplots(figsize=(4, 3))
+    ax2.set_xlabel("x", fontsize=10)
+    assert enlarge_small_text(fig2) == 0 and ax2.xaxis.label.get_fontsize() == 10
+    with pytest.raises(ValueError, match="round"):
+        enlarge_small_text(fig2, rounds=0)
+
+
+def test_retina_is_selected_only_inside_a_kernel():
+    # a plain Python process (the tests) has no IPython shell: nothing is changed
+    from IPython.core.interactiveshell import InteractiveShell
+    if InteractiveShell.initialized():
+        pytest.skip("an IPython shell is running in this process")
+    assert use_retina_inline() is False
 
 
 def test_a_figure_for_the_column_passes():

@@ -11,9 +11,17 @@ sphinx-book-theme column at the 1280 px window of the browser test), shrinking a
 is wider. A font of ``f`` points in a figure saved at :data:`BOOK_DPI` and ``w`` inches wide is
 therefore shown ``f / 72 * min(BOOK_DPI, PAGE_WIDTH_PX / w)`` pixels high; :func:`finish`
 refuses a figure whose smallest text would be shown below :data:`MIN_TEXT_PX`, or whose
-annotations overlap, so every figure of the package is checked each time it is made. The
-browser test checks the same rule on the published pages from the images' own size, resolution
-and displayed width.
+annotations overlap, so every figure of the package is checked each time it is made. Before it
+checks, :func:`finish` raises any text below the rule to the smallest font the figure's width
+allows (:func:`enlarge_small_text`), so the rule is kept here, once, not in each figure.
+The browser test checks the same rule on the published pages from the images' own size,
+resolution and displayed width.
+
+Resolution: one inch of a figure is :data:`BOOK_DPI` CSS pixels, and the notebooks render it at
+twice that many device pixels (:data:`DEVICE_PIXEL_RATIO`, IPython's ``retina`` PNG: an image
+:data:`BOOK_DPI` x 2 dots per inch whose declared width is half its pixel width), so figures stay
+sharp on screens with two device pixels per CSS pixel. :func:`subplots` and :func:`figure` select
+that format in a running IPython kernel (:func:`use_retina_inline`); nothing is set per notebook.
 """
 
 from __future__ import annotations
@@ -24,8 +32,8 @@ __all__ = [
     "BOOK_DPI", "CATEGORY_COLORS", "CATEGORY_HATCHES", "CG_COLORS", "CG_MARKERS", "CG_ROMAN",
     "HINGE_COLORS", "HINGE_LINESTYLES", "MIN_FONT_PT", "MIN_TEXT_PX", "PAGE_WIDTH_PX",
     "SCAN_EXTRA_COLORS", "SCAN_EXTRA_HATCHES", "HATCH_COLOR", "HATCH_LINEWIDTH", "FigureLayoutError",
-    "check_legible", "draw_categories", "figure",
-    "finish", "max_width_in", "shown_text_px", "subplots",
+    "DEVICE_PIXEL_RATIO", "check_legible", "draw_categories", "enlarge_small_text", "figure",
+    "finish", "max_width_in", "shown_text_px", "subplots", "use_retina_inline",
 ]
 
 # Okabe-Ito palette
@@ -99,14 +107,20 @@ PAGE_WIDTH_PX = 672
 browser test); a wider figure is shrunk to it."""
 
 BOOK_DPI = 100.0
-"""Resolution at which the notebooks render their figures (matplotlib-inline's default), dots
-per inch; one dot is one CSS pixel where the figure is not shrunk."""
+"""CSS pixels per inch of a figure in the book (matplotlib-inline's default resolution); one inch
+is shown :data:`BOOK_DPI` CSS pixels wide where the figure is not shrunk."""
 
-MIN_TEXT_PX = 8.0
-"""Smallest height, CSS pixels, of a font as displayed in the book."""
+DEVICE_PIXEL_RATIO = 2
+"""Device pixels per CSS pixel of the figures the notebooks render: their PNGs are saved at
+``DEVICE_PIXEL_RATIO * BOOK_DPI`` dots per inch and declared half as wide (IPython's ``retina``
+format), sharp on a 2x screen."""
+
+MIN_TEXT_PX = 9.0
+"""Smallest height, CSS pixels, of a font as displayed in the book (issue 42: legends of 7 px
+could not be read)."""
 
 MIN_FONT_PT = MIN_TEXT_PX * 72.0 / BOOK_DPI
-"""Smallest font, points, that any figure may use: :data:`MIN_TEXT_PX` at full size (5.76 pt); a
+"""Smallest font, points, that any figure may use: :data:`MIN_TEXT_PX` at full size (6.48 pt); a
 figure wider than the column needs larger fonts (:func:`max_width_in`)."""
 
 
@@ -127,7 +141,7 @@ def shown_text_px(font_pt: float, width_in: float, dpi: float = BOOK_DPI,
 
 def max_width_in(smallest_font_pt: float) -> float:
     """Widest figure, inches, whose ``smallest_font_pt`` text is still shown at
-    :data:`MIN_TEXT_PX` in the book (for 8 pt: 9.3 in; for 7 pt: 8.2 in)."""
+    :data:`MIN_TEXT_PX` in the book (for 8 pt: 8.3 in; for 7 pt: 7.3 in)."""
     if smallest_font_pt < MIN_FONT_PT:
         raise ValueError("a %.2f pt font is below %.2f px even at full size; use at least %.2f pt"
                          % (smallest_font_pt, MIN_TEXT_PX, MIN_FONT_PT))
@@ -206,6 +220,66 @@ def check_legible(fig, *, overlap_px: float = 1.0) -> float:
     return px
 
 
+def use_retina_inline() -> bool:
+    """Select IPython's ``retina`` PNG (:data:`DEVICE_PIXEL_RATIO` device pixels per CSS pixel)
+    for every figure a running IPython kernel displays or glues; return whether a kernel was
+    running (outside one nothing is changed).
+
+    The choice is made on the inline backend's configuration (``InlineBackend.figure_formats``),
+    which IPython applies again whenever the backend is activated, so a later ``%matplotlib
+    inline`` keeps it.
+    """
+    try:
+        from IPython.core.interactiveshell import InteractiveShell
+    except ImportError:  # no IPython: nothing displays figures inline
+        return False
+    if not InteractiveShell.initialized():
+        return False
+    from matplotlib_inline.config import InlineBackend
+
+    cfg = InlineBackend.instance()
+    if set(cfg.figure_formats) != {"retina"}:
+        cfg.figure_formats = {"retina"}
+    return True
+
+
+def _min_font_pt(width_in: float) -> float:
+    """Smallest font, points, shown at :data:`MIN_TEXT_PX` in a figure ``width_in`` inches wide
+    (rounded up to 0.1 pt)."""
+    return float(np.ceil(MIN_TEXT_PX * 72.0 / min(BOOK_DPI, PAGE_WIDTH_PX / width_in) * 10.0 - 1e-6) / 10.0)
+
+
+def _shown_width_in(fig) -> float:
+    """Width, inches, of what the notebook saves of ``fig`` (its tight bounding box, padded)."""
+    fig.draw_without_rendering()
+    return fig.get_tightbbox(fig._get_renderer()).width + 0.2  # bbox_inches="tight" pads 0.1 in a side
+
+
+def enlarge_small_text(fig, *, layout=None, rounds: int = 4) -> int:
+    """Raise every visible text of ``fig`` shown below :data:`MIN_TEXT_PX` in the book to the
+    smallest font that reaches it at the figure's width; return how many texts were changed.
+
+    A larger font can widen the figure (a legend beside the axes, long tick labels), which
+    shrinks it in the column, so the width is measured again after each round (``layout``, a
+    callable taking the figure, lays it out again before each measurement) for at most
+    ``rounds`` rounds. Texts already large enough are left as they are.
+    """
+    if rounds < 1:
+        raise ValueError("enlarge_small_text needs at least one round, got %r" % (rounds,))
+    changed = set()
+    for _ in range(rounds):
+        need = _min_font_pt(_shown_width_in(fig))
+        small = [t for t in _texts(fig) if t.get_fontsize() < need - 1e-9]
+        if not small:
+            break
+        for t in small:
+            t.set_fontsize(need)
+            changed.add(id(t))
+        if layout is not None:
+            layout(fig)
+    return len(changed)
+
+
 def subplots(*args, **kwargs):
     """``matplotlib.pyplot.subplots``, the figure closed in pyplot at once.
 
@@ -215,6 +289,7 @@ def subplots(*args, **kwargs):
     """
     import matplotlib.pyplot as plt
 
+    use_retina_inline()
     kwargs.setdefault("dpi", BOOK_DPI)
     fig, axes = plt.subplots(*args, **kwargs)
     plt.close(fig)
@@ -225,6 +300,7 @@ def figure(**kwargs):
     """``matplotlib.pyplot.figure``, closed in pyplot at once (see :func:`subplots`)."""
     import matplotlib.pyplot as plt
 
+    use_retina_inline()
     kwargs.setdefault("dpi", BOOK_DPI)
     fig = plt.figure(**kwargs)
     plt.close(fig)
@@ -233,9 +309,12 @@ def figure(**kwargs):
 
 def finish(fig, *, layout: bool = True, **layout_kwargs):
     """Lay out a figure made by :func:`subplots` or :func:`figure` (``tight_layout(**layout_kwargs)``
-    unless ``layout`` is False, for a figure laid out otherwise), check it with
+    unless ``layout`` is False, for a figure laid out otherwise), raise any text below the
+    book's smallest size to it (:func:`enlarge_small_text`), check the figure with
     :func:`check_legible` and return it."""
-    if layout:
-        fig.tight_layout(**layout_kwargs)
+    relayout = (lambda f: f.tight_layout(**layout_kwargs)) if layout else None
+    if relayout is not None:
+        relayout(fig)
+    enlarge_small_text(fig, layout=relayout)
     check_legible(fig)
     return fig

@@ -191,7 +191,103 @@ COLLECT = r"""
                         text: (el.textContent || el.getAttribute('src') || '').trim().replace(/\s+/g, ' ').slice(0, 100)});
   }
   const placeholders = (column.innerText.match(/\b(to come|TODO|FIXME|TBD|XXX)\b/g) || []);
+
+  // words split across lines inside a table cell: each word's DOM Range, its client rects
+  // grouped into lines (rects that overlap vertically are one line: a subscript stays on its
+  // word's line); a word with a hyphen may break after it
+  const splitWords = [];
+  const blockOf = (n) => n.parentElement && n.parentElement.closest('p, div, li, td, th, dd, dt, br');
+  for (const cell of column.querySelectorAll('table th, table td')) {
+    if (!cell.checkVisibility()) continue;
+    const chars = [];  // [node, offset] of every character of the cell's visible text
+    let text = '', lastBlock = null;
+    const tw = document.createTreeWalker(cell, NodeFilter.SHOW_TEXT);
+    for (let n = tw.nextNode(); n; n = tw.nextNode()) {
+      if (!n.parentElement || !n.parentElement.checkVisibility() || n.parentElement.closest('mjx-container, script, style')) continue;
+      const block = blockOf(n);
+      if (lastBlock !== null && block !== lastBlock) { text += ' '; chars.push(null); }
+      lastBlock = block;
+      for (let i = 0; i < n.data.length; i++) { text += n.data[i]; chars.push([n, i]); }
+    }
+    for (const m of text.matchAll(/\S+/g)) {
+      const word = m[0];
+      if (word.length < 2 || /[-\u2010\u2011\u2013\u2014\u00ad\/]/.test(word)) continue;
+      const a = chars[m.index], b = chars[m.index + word.length - 1];
+      if (!a || !b) continue;
+      const r = document.createRange();
+      r.setStart(a[0], a[1]); r.setEnd(b[0], b[1] + 1);
+      const lines = [];
+      for (const rect of r.getClientRects()) {
+        if (rect.width < 0.5 || rect.height < 0.5) continue;
+        const line = lines.find(l => rect.top < l.bottom - 1 && rect.bottom > l.top + 1);
+        if (line) { line.top = Math.min(line.top, rect.top); line.bottom = Math.max(line.bottom, rect.bottom); }
+        else lines.push({top: rect.top, bottom: rect.bottom});
+      }
+      if (lines.length > 1) splitWords.push(word.slice(0, 60));
+    }
+  }
+
+  // template words in the text a reader sees (prose and printed outputs; not source code, code
+  // literals or the API's signatures): "None" as a word, "(s)" glued to a noun
+  // "None" is Python's value printed where a word belongs unless it opens a sentence and is
+  // followed by more of it ("None of them", "None comes near"): a "None" in mid-sentence, or one
+  // that stands alone (a table cell, "None," or "None =") is a template word. The API's object
+  // descriptions (dl.py) document Python's None and are left out.
+  const templateWords = [];
+  const codeLike = 'script, style, noscript, template, mjx-container, nav, .cell_input, code, kbd, samp, .sig, .headerlink, dl.py';
+  const blockSel = 'p, li, td, th, dt, dd, figcaption, caption, h1, h2, h3, h4, h5, h6, pre, div';
+  const tw2 = document.createTreeWalker(column, NodeFilter.SHOW_TEXT);
+  for (let n = tw2.nextNode(); n; n = tw2.nextNode()) {
+    const el = n.parentElement;
+    if (!el || el.closest(codeLike) || !el.checkVisibility()) continue;
+    if (el.closest('div.highlight, pre') && !el.closest('.cell_output, .output')) continue;  // code examples
+    for (const m of n.data.matchAll(/\bNone\b|[A-Za-z]\(s\)/g)) {
+      const shown = n.data.slice(Math.max(0, m.index - 40), m.index + 40).replace(/\s+/g, ' ').trim();
+      if (m[0] === 'None') {
+        const block = el.closest(blockSel) || column;
+        const r = document.createRange();
+        r.setStart(block, 0); r.setEnd(n, m.index);
+        const before = r.toString().trim();
+        const after = n.data.slice(m.index + 4);
+        const opensSentence = before === '' || /[.!?]["\u201d)]?$/.test(before);
+        const standsAlone = /^\s*([,;:=)\]]|$)/.test(after);
+        if (opensSentence && !standsAlone) continue;
+      }
+      templateWords.push(shown);
+    }
+  }
+
+  // anything wider than the screen outside its own scroll box (the page would scroll sideways):
+  // the outermost such elements; an element inside a box that clips or scrolls sideways, or
+  // inside a fixed drawer of the theme, is not
+  const vw = document.documentElement.clientWidth;
+  const sideways = [];
+  const clippedOrFixed = (el) => {
+    for (let a = el.parentElement; a && a !== document.documentElement; a = a.parentElement) {
+      const cs = getComputedStyle(a);
+      if (cs.position === 'fixed') return true;
+      if (cs.overflowX !== 'visible' && a.getBoundingClientRect().right <= vw + 1) return true;
+    }
+    return false;
+  };
+  for (const el of document.body.querySelectorAll('*')) {
+    const rect = el.getBoundingClientRect();
+    if (rect.right <= vw + 1 || rect.width === 0 || rect.height === 0) continue;
+    if (getComputedStyle(el).position === 'fixed' || !el.checkVisibility()) continue;
+    if (clippedOrFixed(el)) continue;
+    if (el.parentElement && sideways.some(o => o.el.contains(el))) continue;
+    sideways.push({el, tag: el.tagName.toLowerCase() + (el.className && typeof el.className === 'string' ? '.' + el.className.split(' ')[0] : ''),
+                   right: Math.round(rect.right),
+                   text: (el.textContent || '').trim().replace(/\s+/g, ' ').slice(0, 80)});
+  }
+
   return {
+    splitWords,
+    templateWords,
+    sideways: sideways.map(o => ({tag: o.tag, right: o.right, text: o.text})),
+    viewportWidth: vw,
+    scrollWidth: document.documentElement.scrollWidth,
+    pageHeight: Math.max(document.documentElement.scrollHeight, document.body.scrollHeight),
     overflowing,
     placeholders,
     href: location.href,
@@ -247,10 +343,29 @@ def _record(events: list[dict], into: Rendered, urls: dict[str, str]) -> None:
             into.exceptions.append(d.get("exception", {}).get("description") or d.get("text", "?"))
 
 
-def render(tab, page: str) -> Rendered:
-    """Load one page (once per session), check-ready it, screenshot it, return what it showed."""
-    if page in _rendered:
-        return _rendered[page]
+WIDTHS = (1280, 390)
+"""Browser windows every page is opened at, CSS px: the desktop window of the screenshots and a
+phone's (a 390 px wide phone in portrait)."""
+
+MAX_PAGE_HEIGHT = 40_000
+"""Tallest page, CSS px, a reader is asked to scroll through (at 1280 px; issue 42: the API
+reference was one page 495,000 px tall)."""
+
+
+def screenshot_path(page: str, width: int) -> Path:
+    """Where the screenshot of ``page`` at ``width`` px is saved: ``_build/screenshots/<page>.png``
+    at 1280 px, ``_build/screenshots/<width>px/<page>.png`` otherwise."""
+    name = page[:-len(".html")] + ".png"
+    return SCREENSHOTS / name if width == WIDTHS[0] else SCREENSHOTS / f"{width}px" / name
+
+
+def render(tab, page: str, width: int = WIDTHS[0]) -> Rendered:
+    """Load one page at a window ``width`` px wide (once per session), check-ready it, screenshot
+    it, return what it showed."""
+    if (page, width) in _rendered:
+        return _rendered[(page, width)]
+    if tab.width != width:
+        tab.set_viewport(width, 900)
     path = HTML / page
     out = Rendered(page, {})
     urls: dict[str, str] = {}
@@ -261,17 +376,25 @@ def render(tab, page: str) -> Rendered:
         tab.browser.wait_event("Page.loadEventFired", session=tab.session, timeout=30)
     out.info = tab.evaluate(COLLECT, timeout=90)
     _record(tab.browser.drain_events(tab.session), out, urls)
-    out.screenshot = SCREENSHOTS / (page[:-len(".html")] + ".png")
+    out.screenshot = screenshot_path(page, width)
     out.screenshot_size = tab.screenshot(out.screenshot, max_height=200_000)
     _record(tab.browser.drain_events(tab.session), out, urls)
-    _rendered[page] = out
+    _rendered[(page, width)] = out
     return out
 
 
 @pytest.fixture
 def shown(tab, request) -> Rendered:
+    """The page at the 1280 px window."""
     page = request.node.callspec.params["page"]
     return render(tab, page)
+
+
+@pytest.fixture
+def shown_at(tab, request) -> Rendered:
+    """The page at the window width of the test's ``width`` parameter."""
+    params = request.node.callspec.params
+    return render(tab, params["page"], params["width"])
 
 
 # ---------------------------------------------------------------------------------------
@@ -463,12 +586,14 @@ def test_figure_text_is_legible_at_the_displayed_width(shown, page):
 
     ``finish`` allows, in a figure ``n`` px wide saved at ``BOOK_DPI``, a smallest font of
     ``MIN_TEXT_PX * 72 / min(BOOK_DPI, PAGE_WIDTH_PX * BOOK_DPI / n)`` pt, that is
-    ``MIN_TEXT_PX * n / min(n, PAGE_WIDTH_PX)`` image pixels; the browser shows the image
-    ``shown / n`` of its size, so that text is ``MIN_TEXT_PX * shown / min(n, PAGE_WIDTH_PX)``
-    px high on the page. This fails if a figure was saved at another resolution than the rule
+    ``MIN_TEXT_PX * n / min(n, PAGE_WIDTH_PX)`` CSS pixels of the figure; the PNG holds
+    ``DEVICE_PIXEL_RATIO`` image pixels per CSS pixel (``n`` = its width / that ratio) and the
+    browser shows it ``shown / n`` of its size, so that text is
+    ``MIN_TEXT_PX * shown / min(n, PAGE_WIDTH_PX)`` px high on the page (at the 1280 px window:
+    on a phone every figure is shrunk to the screen, the reader zooms). This fails if a figure was saved at another resolution than the rule
     assumes, or if the page shows it narrower than the column the rule was made for.
     """
-    from rotorlyap.figures.style import BOOK_DPI, MIN_TEXT_PX, PAGE_WIDTH_PX
+    from rotorlyap.figures.style import BOOK_DPI, DEVICE_PIXEL_RATIO, MIN_TEXT_PX, PAGE_WIDTH_PX
 
     here = Path(unquote(urlsplit(shown.info["href"]).path))
     small = []
@@ -480,11 +605,86 @@ def test_figure_text_is_legible_at_the_displayed_width(shown, page):
             small.append(f"{img['src']}: not a PNG made by rotorlyap.figures")
             continue
         dpi = _png_dpi(target)
-        if dpi is None or abs(dpi - BOOK_DPI) > 0.5:
-            small.append(f"{img['src']}: saved at {dpi} dpi, the rule assumes {BOOK_DPI:g}")
+        saved_dpi = BOOK_DPI * DEVICE_PIXEL_RATIO
+        if dpi is None or abs(dpi - saved_dpi) > 0.5:
+            small.append(f"{img['src']}: saved at {dpi} dpi, the rule assumes {saved_dpi:g}")
             continue
-        text_px = MIN_TEXT_PX * img["shown"] / min(img["width"], PAGE_WIDTH_PX)
+        css_width = img["width"] / DEVICE_PIXEL_RATIO  # the figure's width in CSS px at full size
+        text_px = MIN_TEXT_PX * img["shown"] / min(css_width, PAGE_WIDTH_PX)
         if text_px < MIN_TEXT_PX - 0.05:
             small.append(f"{img['src']}: {img['width']} px shown at {img['shown']:.0f} px, "
                          f"its smallest text at {text_px:.1f} px")
     assert not small, f"{page}: figures whose text is shown below {MIN_TEXT_PX:g} px: " + "; ".join(small)
+
+
+@pytest.mark.parametrize("width", WIDTHS)
+@pytest.mark.parametrize("page", PAGES)
+def test_no_word_is_split_inside_a_table_cell(shown_at, page, width):
+    """Headers and cells wrap between words (book/_static/rotorlyap.css), never inside one: a
+    word without a hyphen is shown on one line (its DOM Range's client rects, grouped by line)."""
+    split = shown_at.info["splitWords"]
+    assert not split, f"{page} at {width} px: {len(split)} words split across lines in table cells: {split[:20]}"
+
+
+@pytest.mark.parametrize("width", WIDTHS)
+@pytest.mark.parametrize("page", PAGES)
+def test_raster_figures_have_two_device_pixels_per_css_pixel(shown_at, page, width):
+    """Every raster figure of the column is sharp on a 2x screen: at least two image pixels
+    per CSS pixel it is shown at (rotorlyap.figures.style.DEVICE_PIXEL_RATIO; an SVG is vector)."""
+    from rotorlyap.figures.style import DEVICE_PIXEL_RATIO
+
+    soft = [f"{img['src']}: {img['width']} px shown at {img['shown']:.0f} px"
+            for img in shown_at.info["images"]
+            if img["inFigure"] and img["width"] and img["shown"]
+            and not urlsplit(img["src"] or "").path.lower().endswith(".svg")
+            and img["width"] < DEVICE_PIXEL_RATIO * img["shown"] - 1]
+    assert not soft, f"{page} at {width} px: raster figures below {DEVICE_PIXEL_RATIO}x: " + "; ".join(soft[:10])
+
+
+@pytest.mark.parametrize("width", WIDTHS[:1])
+@pytest.mark.parametrize("page", PAGES)
+def test_no_page_is_taller_than_a_reader_scrolls(shown_at, page, width):
+    """At the 1280 px window (on a phone every page is taller by its narrow column)."""
+    height = shown_at.info["pageHeight"]
+    assert height <= MAX_PAGE_HEIGHT, f"{page} is {height} px tall at {width} px (at most {MAX_PAGE_HEIGHT})"
+
+
+def _is_api_page(page) -> bool:
+    """A page of the API reference (or its indexes), generated from docstrings about Python,
+    where ``None`` is the value documented."""
+    return isinstance(page, str) and (page.startswith(("book/api/", "genindex", "py-modindex"))
+                                      or page == "book/api.html")
+
+
+TEXT_PAGES = [p for p in PAGES if not _is_api_page(p)]
+
+
+@pytest.mark.parametrize("width", WIDTHS)
+@pytest.mark.parametrize("page", TEXT_PAGES)
+def test_no_template_words_in_the_text(shown_at, page, width):
+    """No text left from a template: "None" as a word or "(s)" after a noun, in the prose and
+    printed outputs a reader sees (source code, code literals and signatures excepted; not on
+    the API reference's pages, whose docstrings document Python's ``None``)."""
+    found = shown_at.info["templateWords"]
+    assert not found, f"{page} at {width} px: template words in the text: {found[:10]}"
+
+
+@pytest.mark.parametrize("width", WIDTHS)
+@pytest.mark.parametrize("page", PAGES)
+def test_the_page_never_scrolls_sideways(shown_at, page, width):
+    """Nothing is wider than the screen outside its own scroll box (a wide table or equation
+    scrolls in its box, book/_static/rotorlyap.css), so the page itself never scrolls sideways."""
+    info = shown_at.info
+    assert not info["sideways"], (
+        f"{page} at {width} px: {len(info['sideways'])} elements run past the {info['viewportWidth']} px "
+        "screen outside a scroll box: " + "; ".join(f"{o['tag']} (to {o['right']} px): {o['text']}"
+                                                  for o in info["sideways"][:10]))
+    assert info["scrollWidth"] <= info["viewportWidth"] + 1, (
+        f"{page} at {width} px: the page is {info['scrollWidth']} px wide on a {info['viewportWidth']} px screen")
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_phone_screenshot_saved(tab, page):
+    out = render(tab, page, WIDTHS[1])
+    width, height = _png_size(out.screenshot)
+    assert (width, height) == out.screenshot_size and width == WIDTHS[1] and height >= 300
