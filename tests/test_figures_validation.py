@@ -361,9 +361,9 @@ def test_rule_changes_list_the_cells_whose_verdict_or_bounds_moved():
     assert d.rows()[1] == ("quadratic Q = I, backward C.G.", "0.2", "8 -> 0", "0.30 -> 0", "0.010 -> -")
     assert d.facts() == {"ch7_rule_changed": 2, "ch7_rule_cells": 4, "ch7_rule_rtol_pct": 10.0, "ch7_rule_lost": 1,
                          "ch7_rule_gained": 0}
-    assert d.summary().splitlines()[-1] == ("changed: 2 of 4 cells; certified by the paper's rule only: 1; "
-                                            "never the reverse: True")
-    assert d.markdown().splitlines()[0].startswith("| function, case | mu | azimuths certified (of 24) |")
+    assert d.summary().splitlines()[-1] == ("changed: 2 of 4 cells; passed by the paper's rule, not certified "
+                                            "by the sound rule: 1; never the reverse: True")
+    assert d.markdown().splitlines()[0].startswith("| function, case | mu | azimuths of 24, paper's -> sound |")
     e = fv.RuleChanges(labels=("x",), mu_values=np.array([0.1]), n_paper=np.array([[-1]]),
                        n_sound=np.array([[-1]]), A_paper=np.array([[nan]]), A_sound=np.array([[nan]]),
                        lambda0_paper=np.zeros((1, 1)), lambda0_sound=np.zeros((1, 1)), n_psi=24)

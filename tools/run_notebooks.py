@@ -28,7 +28,9 @@ def run(path: Path) -> float:
     """Execute one notebook in place from a fresh kernel; return the wall time in seconds."""
     nb = nbformat.read(path, as_version=4)
     start = time.perf_counter()
-    NotebookClient(nb, timeout=3600, kernel_name="python3",
+    # record_timing=False: no execution timestamps in the cells' metadata (volatile text that
+    # would change every committed notebook on every run)
+    NotebookClient(nb, timeout=3600, kernel_name="python3", record_timing=False,
                    resources={"metadata": {"path": str(path.parent)}}).execute()
     nbformat.write(nb, path)
     return time.perf_counter() - start

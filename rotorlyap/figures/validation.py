@@ -1470,15 +1470,16 @@ class RuleChanges:
 
     def markdown(self) -> str:
         """:meth:`rows` as a Markdown table."""
-        return markdown_table(("function, case", "mu", f"azimuths certified (of {self.n_psi})",
-                               "A", "min lambda0"), self.rows())
+        return markdown_table(("function, case", "mu", f"azimuths of {self.n_psi}, paper's -> sound",
+                               "A, paper's -> sound", "min lambda0, paper's -> sound"), self.rows())
 
     def summary(self) -> str:
         """The table's rows, and how many cells changed of how many."""
         ran = self.n_paper >= 0
         lines = [" | ".join(r) for r in self.rows()]
-        lines.append(f"changed: {int(self.changed().sum())} of {int(ran.sum())} cells; certified by the paper's "
-                     f"rule only: {int(((self.n_paper > 0) & (self.n_sound == 0)).sum())}; never the reverse: "
+        lines.append(f"changed: {int(self.changed().sum())} of {int(ran.sum())} cells; passed by the paper's "
+                     f"rule, not certified by the sound rule: {int(((self.n_paper > 0) & (self.n_sound == 0)).sum())}; "
+                     f"never the reverse: "
                      f"{bool(not ((self.n_sound > 0) & (self.n_paper == 0)).any())}")
         return "\n".join(lines)
 
