@@ -127,14 +127,15 @@ class FanData:
         return rows
 
     def summary(self) -> str:
-        """One line per rotor speed: each mode's frequency (/rev) and damping ratio."""
+        """One line per rotor speed: each mode's frequency (/rev) and damping ratio (in words, not
+        the symbols zeta and sigma, which are the lag angle and the solidity)."""
         lines = [f"hover modes {'with air' if self.air else 'in vacuum'} against rotor speed "
-                 f"(nominal {self.nominal_rotor_speed:.4g} rad/s)"]
+                 f"(nominal {self.nominal_rotor_speed:.4g} rad/s): frequency, damping ratio"]
         for i, omega in enumerate(self.rotor_speed):
             if self.messages[i]:
                 lines.append(f"  {omega:8.4g} rad/s: not found ({self.messages[i]})")
                 continue
-            text = ", ".join(f"{n} {m.frequency:.3f}/rev zeta {m.damping_ratio:.3f}"
+            text = ", ".join(f"{n} {m.frequency:.3f}/rev, {m.damping_ratio:.3f}"
                              for n, m in zip(self.names(i), self.modes[i]))
             lines.append(f"  {omega:8.4g} rad/s: {text}")
         return "\n".join(lines)
@@ -280,13 +281,14 @@ class FloquetModes:
         return rows
 
     def summary(self) -> str:
-        """One line per advance ratio: each mode's frequency (/rev) and growth rate (/rev)."""
-        lines = [f"Floquet modes of the {self.condition} trim against the advance ratio"]
+        """One line per advance ratio: each mode's frequency and growth rate (both per rev)."""
+        lines = [f"Floquet modes of the {self.condition} trim against the advance ratio: "
+                 "frequency, growth rate (both per rev)"]
         for i, mu in enumerate(self.mu):
             if not self.found[i]:
                 lines.append(f"  mu = {mu:.4g}: not found ({self.messages[i]})")
                 continue
-            text = ", ".join(f"{n} {self.frequency[i, j]:.3f}/rev sigma {self.growth_rate[i, j]:.3f}"
+            text = ", ".join(f"{n} {self.frequency[i, j]:.3f}, {self.growth_rate[i, j]:+.3f}"
                              for j, n in enumerate(self.names))
             lines.append(f"  mu = {mu:.4g}: {text}")
         return "\n".join(lines)

@@ -800,8 +800,8 @@ def mode_summary(data) -> str:
     """The modes of a fan plot or of a Floquet sweep as chapter 9 prints them, in words.
 
     The book keeps one symbol for one quantity: zeta is the lag angle and sigma the solidity,
-    so a mode's damping ratio and its growth rate are named, not given those symbols (the
-    ``summary`` methods of :mod:`rotorlyap.analysis.modes` print them as ``zeta`` and ``sigma``).
+    so a mode's damping ratio and its growth rate are named, not given those symbols, as the
+    ``summary`` methods of :mod:`rotorlyap.analysis.modes` print them (this returns that summary).
 
     Parameters
     ----------
@@ -815,24 +815,4 @@ def mode_summary(data) -> str:
     str
         A title line, then one line per rotor speed or advance ratio.
     """
-    if hasattr(data, "rotor_speed") and hasattr(data, "nominal_rotor_speed"):
-        lines = [f"hover modes {'with air' if data.air else 'in vacuum'} against rotor speed "
-                 f"(nominal {data.nominal_rotor_speed:.4g} rad/s): frequency, damping ratio"]
-        for i, omega in enumerate(data.rotor_speed):
-            if data.messages[i]:
-                lines.append(f"  {omega:8.4g} rad/s: not found ({data.messages[i]})")
-                continue
-            text = ", ".join(f"{n} {m.frequency:.3f}/rev, {m.damping_ratio:.3f}"
-                             for n, m in zip(data.names(i), data.modes[i]))
-            lines.append(f"  {omega:8.4g} rad/s: {text}")
-        return "\n".join(lines)
-    lines = [f"Floquet modes of the {data.condition} trim against the advance ratio: "
-             "frequency, growth rate (both per rev)"]
-    for i, mu in enumerate(data.mu):
-        if not data.found[i]:
-            lines.append(f"  mu = {mu:.4g}: not found ({data.messages[i]})")
-            continue
-        text = ", ".join(f"{n} {data.frequency[i, j]:.3f}, {data.growth_rate[i, j]:+.3f}"
-                         for j, n in enumerate(data.names))
-        lines.append(f"  mu = {mu:.4g}: {text}")
-    return "\n".join(lines)
+    return data.summary()
