@@ -23,30 +23,18 @@ from rotorlyap.analysis.functions import quadratic_function
 from rotorlyap.analysis.nonlinear_functions import DesignedFunction, energy_basis
 from rotorlyap.analysis.proof import designed_quadratic_form, enclosure_width, prove_blade, prove_designed
 from rotorlyap.conventions import DEFAULT_SCALES, STATE_NAMES
-from rotorlyap.methods.scenario import BasisFunction, Design, monomial_basis
+from rotorlyap.methods.scenario import monomial_basis
 from rotorlyap.model.blade import Blade
 from rotorlyap.model.parameters import BladeParameters
 from rotorlyap.model.steady import as_steady_motion, disturbed_rhs
+
+from designed_helpers import designed as _designed, weights as _weights
 
 
 @pytest.fixture(scope="module")
 def hover():
     blade = Blade(BladeParameters.table_i("forward"), 0.0)
     return blade, as_steady_motion(None, blade)
-
-
-def _designed(blade, steady, basis, coefficients, A=1.0):
-    f = disturbed_rhs(blade, steady)
-    fn = BasisFunction(basis, coefficients, f, "test")
-    design = Design(function=fn, lam=0.1, A=A, margin=0.1, feasible=True, rounds=1, n_constraints=1)
-    return DesignedFunction(blade=blade, steady=steady, family="energy", design=design,
-                            scales=np.asarray(DEFAULT_SCALES, dtype=float), autonomous=True, label="test")
-
-
-def _weights(S):
-    """The quadratic monomials' weights of ``y^T S y`` in the order of monomial_basis."""
-    iu = np.triu_indices(6)
-    return np.where(iu[0] == iu[1], S[iu], 2 * S[iu])
 
 
 def test_a_designed_quadratic_form_is_read_back_exactly(hover):
