@@ -45,11 +45,24 @@ _THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS
 
 
 def pytest_configure(config):
-    """Point 3: one BLAS and kernel thread per xdist worker (set before the workers start)."""
+    """Point 3: one BLAS and kernel thread per xdist worker (set before the workers start).
+
+    Each xdist worker also keeps its own numba cache (``_build/numba-cache/<worker>``, unless
+    ``NUMBA_CACHE_DIR`` is set), which the notebooks' kernels it starts inherit: numba's on-disk
+    cache is not safe against two processes compiling the same function into it at once (numba
+    issues 4807 and 10128: a cached function loaded half-written segfaults). A clean clone's
+    run starts with no cache, both workers compile the same kernels in their first minutes, and
+    a notebook's kernel crashed so on 2026-12-05, leaving nbval waiting for a reply that never
+    came."""
     workers = getattr(config.option, "numprocesses", None)
     if workers not in (None, 0, "0") and not hasattr(config, "workerinput"):
         for name in _THREAD_VARIABLES:
             os.environ.setdefault(name, "1")
+    worker = getattr(config, "workerinput", {}).get("workerid")
+    if worker is not None and "NUMBA_CACHE_DIR" not in os.environ:
+        os.environ["NUMBA_CACHE_DIR"] = str(Path(__file__).resolve().parent / "_build" / "numba-cache" / worker)
+        if "numba" in sys.modules:  # numba read its configuration when imported: read it again
+            sys.modules["numba"].core.config.reload_config()
 
 
 def _nbval_cell_class():
