@@ -12,7 +12,7 @@ is an *indicator*. So
   percentage printed as zero with decimals ("0.0 %": below the printed precision it is
   "< 0.05 %", :func:`rotorlyap.reporting.percent`).
 
-Identifiers are not prose: code spans, MyST roles and labels (``fig-rigorous-fig8``) and
+Identifiers are not prose: code spans, MyST roles and labels (``fig-certificate-scan``) and
 directive options are removed before the check.
 """
 
@@ -46,7 +46,7 @@ ALLOWED = {
 
 def strip_identifiers(text: str) -> str:
     """Prose only: code spans, MyST roles with their targets, labels and directive options out."""
-    text = re.sub(r"\{[a-z:]+\}`[^`]*`", " ", text)          # {numref}`fig-rigorous-fig8`
+    text = re.sub(r"\{[a-z:]+\}`[^`]*`", " ", text)          # {numref}`fig-certificate-scan`
     text = re.sub(r"```\{?[\w:-]*\}?[^\n]*", " ", text)       # directive openings
     text = re.sub(r"`[^`\n]*`", " ", text)                    # code spans
     text = re.sub(r"^\s*:[\w-]+:.*$", " ", text, flags=re.MULTILINE)   # :name: fig-...
@@ -110,7 +110,7 @@ def test_the_rule_fires_on_the_defects_of_issue_42_and_not_on_proofs_or_negation
         "The Taylor-model proof is rigorous: every rounding error is enclosed.",
         "It is no general guarantee: a sampled search can miss a narrow region.",
         "The book never calls it rigorous; only a proof is.",
-        "the quadratic function in the strict reading ({numref}`fig-rigorous-fig8`).",
+        "the quadratic function in the strict reading ({numref}`fig-certificate-scan`).",
     ]
     for s in fired:
         assert forbidden_sentences("x.md", s) == [s.strip()] or forbidden_sentences("x.md", s), s

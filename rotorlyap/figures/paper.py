@@ -1244,6 +1244,8 @@ class WSpheresData:
     axis_W : numpy.ndarray
         ``W`` at ``psi = 0`` along each positive scaled axis on the unit sphere
         (``x = a_i e_i``), (6,), J: which axis has the least energy.
+    scales : numpy.ndarray
+        The norm scales ``a_i`` of the spheres, (6,), rad and rad/rad.
     """
 
     cg: object
@@ -1258,6 +1260,7 @@ class WSpheresData:
     practical_label: str
     n_evaluations: int
     axis_W: np.ndarray
+    scales: np.ndarray
 
     @property
     def azimuth_variation(self) -> float:
@@ -1285,9 +1288,13 @@ class WSpheresData:
         """Chapter 6's Fig. 6 numbers: ``ch6_w_theta`` and ``ch6_w_fl_min`` (``W`` along the
         pitch axis and the least along a flap or lag axis, J), ``ch6_w_var`` (variation over
         the azimuth, one digit), ``ch6_winf_<i>`` and ``ch6_wsup_<i>`` (azimuth means per
-        ``A``, J) and ``ch6_rinf_change``, ``ch6_rsup_change`` (change of ``W/A^2`` from the
-        smallest to the largest ``A``, %)."""
+        ``A``, J), ``ch6_rinf_change``, ``ch6_rsup_change`` (change of ``W/A^2`` from the
+        smallest to the largest ``A``, %), ``ch6_A_values`` (the radii, in words) and
+        ``ch6_A_max_flap`` (the flap angle of the largest sphere's flap axis, deg)."""
+        A = [f"{v:g}" for v in self.A_values]
         out = {
+            "ch6_A_values": ", ".join(A[:-1]) + " and " + A[-1] if len(A) > 1 else A[0],
+            "ch6_A_max_flap": float(f"{np.degrees(self.A_values[-1] * self.scales[0]):.2g}"),
             "ch6_w_theta": round(float(self.axis_W[2]), 1),
             "ch6_w_fl_min": round(float(self.axis_W[[0, 1, 3, 4]].min()), 0),
             "ch6_w_var": float("%.1g" % self.azimuth_variation),
@@ -1328,7 +1335,7 @@ def w_spheres_data(cg="forward", mu: float = 0.15, A_values=(0.5, 1.0, 2.0, 4.0,
                         strict_inf=np.array(out["inf"]), strict_sup=np.array(out["sup"]),
                         practical_min=np.array(out["pmin"]), practical_max=np.array(out["pmax"]),
                         strict_label=READING_LABELS["strict"], practical_label=READING_LABELS["practical"],
-                        n_evaluations=w.n, axis_W=axis_W)
+                        n_evaluations=w.n, axis_W=axis_W, scales=a)
 
 
 def plot_w_spheres(data: WSpheresData, axes) -> None:

@@ -8,7 +8,7 @@ drawing functions take that data and matplotlib ``Axes``. The chain is
 2. :func:`floquet_data`: Floquet modes about it and about the hover equilibrium
    (:mod:`rotorlyap.analysis.floquet`);
 3. :func:`scan_data`: the engine's verdict on a (psi, mu) grid for several Liapunov functions
-   and steady motions (:data:`CANDIDATES`): the rigorous counterpart of the paper's Fig. 8;
+   and steady motions (:data:`CANDIDATES`): the certificate counterpart of the paper's Fig. 8;
 4. :func:`validation_data`: simulated motions against those verdicts (:mod:`rotorlyap.methods.validation`);
 5. :func:`motion_data`: what the motion does where a reading marks instability.
 
@@ -852,7 +852,7 @@ def quadratic_data(case: str = "forward", mu: float = 0.15, *, other_cases: tupl
 
 
 # --------------------------------------------------------------------------------------
-# 3. Scans: the rigorous Fig. 8
+# 3. Scans: the paper's Fig. 8 with numerical certificates
 # --------------------------------------------------------------------------------------
 
 
@@ -1933,7 +1933,7 @@ def motion_data(*, flutter_periods: int = 15, drift_mu: float = 0.05, drift_peri
       whose hover flutters: what that modelling choice decides, ``flutter_periods``
       revolutions;
     * backward C.G. at ``drift_mu``, where no periodic motion is found near the hover
-      equilibrium (the white cells of the rigorous Fig. 8), ``drift_periods`` revolutions;
+      equilibrium (the white cells of the certificate scan, fig-certificate-scan), ``drift_periods`` revolutions;
     * forward C.G. at ``forward_mu`` about the hover equilibrium (the paper's steady motion,
       where its Fig. 8 reading marks instability), ``forward_periods`` revolutions; the
       reference is the periodic motion seen from the hover equilibrium.

@@ -156,8 +156,8 @@ def start_directions(n: int, dim: int = 6, seed: int = 1) -> np.ndarray:
 
 def certified_mask(result: TechnicalStabilityResult, psi_index: np.ndarray, radius: np.ndarray) -> np.ndarray:
     """Which starts ``(psi_j, ||x0|| = radius)`` the result covers: ``stable[j]`` and
-    ``radius < lambda0[j]``. For a practical-reading result this is the set *indicated*
-    stable (not a certificate)."""
+    ``radius < lambda0[j]``. For a practical-reading result this is the set where the indicator
+    passes (not a certificate)."""
     psi_index = np.asarray(psi_index, dtype=int)
     radius = np.asarray(radius, dtype=float)
     return np.asarray(result.stable)[psi_index] & (radius < np.asarray(result.lambda0)[psi_index])
@@ -203,7 +203,7 @@ class Validation:
     readings : tuple of str
         ``"strict"`` (certificate) or ``"practical"`` (indicator) per name.
     covered : numpy.ndarray
-        Boolean, shape (len(names), N): certified (strict) or indicated stable (practical).
+        Boolean, shape (len(names), N): certified (strict) or passing the indicator (practical).
     A_used : numpy.ndarray
         Each result's bound after step 3, shape (len(names),).
     n_restarts : int
