@@ -48,6 +48,8 @@ What is checked, page by page
   its smallest text, which ``rotorlyap.figures.style.finish`` checked when the figure was made,
   is displayed at least ``MIN_TEXT_PX`` (8 px) high; the height is computed from the image's
   file and its displayed width;
+* shape: at both widths every figure is drawn with its file's aspect ratio (scaled, not
+  squeezed, when a phone's column narrows it);
 * a screenshot of the whole page is saved under ``_build/screenshots/`` (same path as the
   page, ``.png``) for a person to look at.
 
@@ -305,6 +307,7 @@ COLLECT = r"""
     images: [...document.images].map(i => ({src: i.getAttribute('src'), complete: i.complete,
                                             width: i.naturalWidth, height: i.naturalHeight,
                                             shown: i.getBoundingClientRect().width,
+                                            shownHeight: i.getBoundingClientRect().height,
                                             inFigure: column.contains(i) && i.checkVisibility() && !!i.closest('figure, div.figure, .cell_output')})),
     links,
     ids: [...document.querySelectorAll('[id]')].map(e => e.id)
@@ -646,6 +649,19 @@ def test_raster_figures_have_two_device_pixels_per_css_pixel(shown_at, page, wid
             and not urlsplit(img["src"] or "").path.lower().endswith(".svg")
             and img["width"] < DEVICE_PIXEL_RATIO * img["shown"] - 1]
     assert not soft, f"{page} at {width} px: raster figures below {DEVICE_PIXEL_RATIO}x: " + "; ".join(soft[:10])
+
+
+@pytest.mark.parametrize("width", WIDTHS)
+@pytest.mark.parametrize("page", PAGES)
+def test_figures_keep_their_shape(shown_at, page, width):
+    """Every figure is drawn with its file's aspect ratio at both widths (within 2 %): a figure
+    narrowed to a phone's column is scaled, not squeezed sideways (a circle stays a circle)."""
+    bent = [f"{img['src']}: file {img['width']} x {img['height']} px, drawn {img['shown']:.0f} x "
+            f"{img['shownHeight']:.0f} px"
+            for img in shown_at.info["images"]
+            if img["inFigure"] and img["width"] and img["height"] and img["shown"] and img["shownHeight"]
+            and abs((img["shownHeight"] / img["shown"]) / (img["height"] / img["width"]) - 1) > 0.02]
+    assert not bent, f"{page} at {width} px: figures drawn out of shape: " + "; ".join(bent[:10])
 
 
 @pytest.mark.parametrize("width", WIDTHS[:1])
