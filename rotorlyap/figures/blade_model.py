@@ -1791,13 +1791,15 @@ class AirModesData(HoverCasesData):
 
     def facts(self) -> dict[str, Any]:
         """The forward case's flap, lag and pitch modes with air (frequencies per rev, damping
-        ratios, shapes), gamma/16 and the classical nu_e."""
+        ratios, the flap mode's decay rate ``ch4_flap_air_decay`` per rev, shapes), gamma/16
+        (the classical flap-alone decay rate, per rev) and the classical nu_e."""
         f = self["forward"]
         p = self.params[self.cases.index("forward")]
         fl = {m.dominant_hinge: m for m in f.air_modes}
         nu_e = effective_flap_frequency(f.closed_forms.flap_frequency, f.lock_number, p.pitch_flap_coupling)
         return {"ch4_flap_air": round(fl["flap"].natural_frequency, 2),
                 "ch4_flap_air_zeta": round(fl["flap"].damping_ratio, 2),
+                "ch4_flap_air_decay": Rounded(-fl["flap"].growth_rate, 2),
                 "ch4_pitch_air": round(fl["pitch"].frequency, 2),
                 "ch4_pitch_air_zeta": round(fl["pitch"].damping_ratio, 3),
                 "ch4_gamma16": round(f.lock_number / 16, 2),

@@ -1788,7 +1788,7 @@ def plot_regions_plane(data: RegionsData, ax, case_index: int = 0, *, title: str
     th = np.linspace(180, 360, 361)
     rb = data.root_r_over_R / np.maximum(-np.sin(np.radians(th)), 1e-9)
     _reverse_flow(ax, th, rb, top)
-    ax.axvline(180, color="k", lw=0.6, ls=":")
+    ax.axvline(180, color="k", lw=1.2, ls=":", zorder=5)  # on top of the hatching
     ax.text(90, 1.01, "advancing", transform=ax.get_xaxis_transform(), ha="center", fontsize=8, color="tab:orange")
     ax.text(270, 1.01, "retreating", transform=ax.get_xaxis_transform(), ha="center", fontsize=8, color="tab:blue")
     ax.set_xlim(0, 360)
@@ -2374,6 +2374,10 @@ class ConvergenceData:
         return {"ch6_dev_ns": bound_ns, "ch6_dev_st": bound_st, "ch6_dev_psi": round(self.deviations()[2], 3)}
 
 
+#: Refined starts of every strict search of :func:`convergence_data`.
+CONVERGENCE_N_REFINE = 16
+
+
 def convergence_data(n_sphere_values=(0, 64, 256, 1024, 4096), n_stations_values=(6, 8, 12, 16, 24),
                      n_psi_values=(36, 72, 144), mu_values=MU_GRID, *, mu_check: float = 0.15,
                      test_disturbances=FLAP_LAG_TEST_DISTURBANCES,
@@ -2386,7 +2390,7 @@ def convergence_data(n_sphere_values=(0, 64, 256, 1024, 4096), n_stations_values
         fun = energy_function(Blade(case_params(cg), 0.0))
         for j, ns in enumerate(n_sphere_values):
             sup[i, j] = sphere_extremum(fun.dW, psi0, DEFAULT_A, a, unit_sphere_points(6, int(ns)),
-                                        n_refine=16, n_iter=60).value[0]
+                                        n_refine=CONVERGENCE_N_REFINE, n_iter=60).value[0]
     col = np.zeros((len(CASES), len(n_stations_values)))
     sup_st = np.zeros(len(n_stations_values))
     prac = np.zeros(len(n_stations_values))
@@ -2400,7 +2404,7 @@ def convergence_data(n_sphere_values=(0, 64, 256, 1024, 4096), n_stations_values
         xi = blade.equilibrium()
         fun = energy_function(blade, xi)
         sup_st[j] = sphere_extremum(fun.dW, psi0, DEFAULT_A, a, unit_sphere_points(6, 1024),
-                                    n_refine=16, n_iter=60).value[0]
+                                    n_refine=CONVERGENCE_N_REFINE, n_iter=60).value[0]
         dwf = energy_function(Blade(p, mu_check), xi).dW
         vals = dwf(np.repeat(psi, len(tests)), np.tile(tests * a, (psi.size, 1))).reshape(psi.size, -1)
         prac[j] = vals.max(axis=1).mean()
