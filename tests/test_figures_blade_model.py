@@ -21,12 +21,13 @@ from rotorlyap.figures.export import figure_csv  # noqa: E402
 from rotorlyap.model.airfoil import LinearAirfoil  # noqa: E402
 from rotorlyap.model.modes import closed_forms, hover_modes, pitch_mode  # noqa: E402
 from rotorlyap.model.parameters import CG_POSITIONS, BladeParameters  # noqa: E402
+from rotorlyap.reporting import Rounded  # noqa: E402
 
 
 def _plain(facts: dict) -> bool:
-    """Every value a Python int, float or str: glued, it prints as ``0.25``, never as
-    ``np.float64(0.25)``."""
-    return all(type(v) in (int, float, str) for v in facts.values())
+    """Every value a Python int, float or str, or a :class:`rotorlyap.reporting.Rounded` (a
+    float with its decimals): glued, it prints as ``0.25``, never as ``np.float64(0.25)``."""
+    return all(type(v) in (int, float, str, Rounded) for v in facts.values())
 
 
 # --------------------------------------------------------------------------------------
@@ -317,7 +318,8 @@ def test_the_pitch_damping_leaves_the_slow_real_lag_mode_where_it_is():
     assert data.largest_real[0, 0] == pytest.approx(data.largest_real[0, 1], abs=1e-3)
     assert np.isnan(data.largest_real[1]).all()  # no pitch-flap coupling: no real mode
     assert data.facts() == {"ch4_bwd_real_q": -0.007, "ch4_bwd_real_0": -0.007}
-    assert "largest real none" in data.summary()
+    assert "without: pitch mode" in data.summary() and "no real root" in data.summary()
+    assert "nan" not in data.summary()
 
 
 def test_cg_sweep_pair_exports_both_sweeps_with_complex_parts_split(tmp_path):

@@ -233,7 +233,7 @@ def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_py
     portrait = theory.phase_portrait_data(toy, res, 0, n_starts=2, n_periods=1)
     conv = _convergence(A=[0.44, 0.41, 0.40], lam_mean=[0.3, 0.29, 0.28])
     cases = [
-        (theory.figure_phase_portrait(portrait, title="t"), (7, 4.4), 1),
+        (theory.figure_phase_portrait(portrait, title="t"), (6, 7), 1),
         (theory.figure_norm_history(history), (7, 3.6), 1),
         (theory.figure_level_sets(levels), (7.6, 4.2), 2),
         (theory.figure_start_region(theory.start_region_data(res)), (7, 3.6), 2),
