@@ -964,7 +964,7 @@ def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     ax.set_xticks(np.arange(0, 361, 90))
     ax.set_xlabel(r"azimuth $\psi$ (deg)")
     ax.set_ylabel(r"$\|x\|$")
-    ax.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=8, frameon=False)
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=9, frameon=False)
     for k in range(data.sim_norm.shape[1]):
         bx.plot(data.sim_psi, data.sim_norm[:, k] / A, color="tab:blue", lw=1)
     bx.axhline(1.0, color="tab:green", lw=2, label=r"$\|x\| = A$")
@@ -972,5 +972,5 @@ def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     bx.set_xlabel("revolutions after the start")
     bx.set_ylabel(r"$\|x\| / A$")
     bx.set_ylim(0, 1.1 * max(1.0, float(data.sim_norm.max() / A)))
-    bx.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=8, frameon=False)
+    bx.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=9, frameon=False)
     return finish(fig)
