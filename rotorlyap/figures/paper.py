@@ -946,8 +946,8 @@ def plot_hover_rate(data: HoverRateData, axes) -> None:
     ax_a.set_title("(a) $W'$ in hover; dotted: each rate axis (practical)", fontsize=9)
     ax_a.legend(fontsize=8, loc="upper left")
     real_root = np.asarray(data.eig_freq) < 0.005
-    ax_b.plot(cg, data.eig_max_real, "o-", color="k", label="least-damped mode (largest real part);\n"
-              "number: its frequency (per rev)" + ("; none: a real root" if real_root.any() else ""))
+    ax_b.plot(cg, data.eig_max_real, "o-", color="k", label="least-damped mode (largest real part),\n"
+              "labelled with its frequency (per rev)" + ("\nunlabelled: a real root" if real_root.any() else ""))
     if np.isfinite(data.eig_real_root).any():
         ax_b.plot(cg, data.eig_real_root, "^--", color="tab:purple", label="largest real root (divergence if > 0)")
     ax_b.axhline(0, color="k", lw=0.6)
