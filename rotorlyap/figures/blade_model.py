@@ -393,7 +393,7 @@ def plot_hub_top_view(data: SchematicData, ax) -> None:
     _hub_x_dims(ax, data, -0.12, 0.075)
     _dim(ax, (0, 0.25), (data.root_cutout, 0.25), f"$R - R_1$ = {data.root_cutout:.3f} m",
          fontsize=8, text_offset=(0, 0.045))
-    ax.text(0.0, 0.16, f"$e_5$ = {data.hub_lengths[4]:.3f} m: the pitch axis passes through the pitch hinge",
+    ax.text(0.0, 0.16, f"$e_5$ = {data.hub_lengths[4]:.3g} m: pitch axis through the pitch hinge",
             fontsize=8, ha="left", va="center", color="tab:red")
     ax.text(x1, 0.065, "flap", fontsize=8, ha="center", color=HINGE_COLORS["flap"])
     ax.text(x2, 0.03, "lag", fontsize=8, ha="center", va="bottom", color=HINGE_COLORS["lag"])
