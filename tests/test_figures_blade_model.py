@@ -319,6 +319,9 @@ def test_the_pitch_damping_leaves_the_slow_real_lag_mode_where_it_is():
     assert np.isnan(data.largest_real[1]).all()  # no pitch-flap coupling: no real mode
     assert data.facts() == {"ch4_bwd_real_q": -0.007, "ch4_bwd_real_0": -0.007}
     assert "without: pitch mode" in data.summary() and "no real root" in data.summary()
+    table = data.markdown().splitlines()
+    assert table[0].count("|") == 6 and len(table) == 2 + len(data.labels)
+    assert "no real root" in table[3] and "nan" not in data.markdown()
     assert "nan" not in data.summary()
 
 

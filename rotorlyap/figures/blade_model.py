@@ -1993,6 +1993,19 @@ class VariantsData:
     largest_real: np.ndarray
     lag_stiffness: float
 
+    def markdown(self) -> str:
+        """The growth rates as a table (per rev, 3 decimals): one row per variant, the pitch
+        mode and the largest real root with the pitch damping and without; "no real root" where
+        all eigenvalues are complex."""
+        def root(x: float) -> str:
+            return "no real root" if np.isnan(x) else "%+.3f" % _r3(x)
+
+        rows = [(label, "%+.3f" % _r3(pg[0]), root(lr[0]), "%+.3f" % _r3(pg[1]), root(lr[1]))
+                for label, pg, lr in zip(self.labels, self.pitch_growth, self.largest_real)]
+        return markdown_table(("%s C.G. (%.3f c): variant" % (self.case, self.cg_position),
+                               "pitch mode, with pitch damping", "largest real root, with",
+                               "pitch mode, without", "largest real root, without"), rows)
+
     def summary(self) -> str:
         """Growth rates per variant (per rev, 3 decimals), as chapter 4 prints them."""
         lines = ["%s C.G. (%.3f c): growth rates per rev" % (self.case, self.cg_position)]
