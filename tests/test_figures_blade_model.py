@@ -21,12 +21,13 @@ from rotorlyap.figures.export import figure_csv  # noqa: E402
 from rotorlyap.model.airfoil import LinearAirfoil  # noqa: E402
 from rotorlyap.model.modes import closed_forms, hover_modes, pitch_mode  # noqa: E402
 from rotorlyap.model.parameters import CG_POSITIONS, BladeParameters  # noqa: E402
+from rotorlyap.reporting import Rounded  # noqa: E402
 
 
 def _plain(facts: dict) -> bool:
-    """Every value a Python int, float or str: glued, it prints as ``0.25``, never as
-    ``np.float64(0.25)``."""
-    return all(type(v) in (int, float, str) for v in facts.values())
+    """Every value a Python int, float or str, or a :class:`rotorlyap.reporting.Rounded` (a
+    float with its decimals): glued, it prints as ``0.25``, never as ``np.float64(0.25)``."""
+    return all(type(v) in (int, float, str, Rounded) for v in facts.values())
 
 
 # --------------------------------------------------------------------------------------
@@ -110,7 +111,8 @@ def test_moments_about_each_hinge_balance_at_the_hover_equilibrium(forward_hover
     assert np.all(np.abs(total) < 1e-6 * np.abs(data.conservative).max())
     assert data.case == "forward C.G."
     lines = data.summary().splitlines()
-    assert len(lines) == 4 and all(line.split()[-3] == "0.0" for line in lines[1:])  # "sum 0.0 N m"
+    assert len(lines) == 5 and lines[1].startswith("moments about the hinges (N m)")
+    assert all(line.split()[-1] == "0.0" for line in lines[2:])  # the sum, in the header's unit
     assert data.facts() == {"ch3_flap_aero": 98840, "ch3_lag_aero": 6040}
 
 
@@ -316,7 +318,11 @@ def test_the_pitch_damping_leaves_the_slow_real_lag_mode_where_it_is():
     assert data.largest_real[0, 0] == pytest.approx(data.largest_real[0, 1], abs=1e-3)
     assert np.isnan(data.largest_real[1]).all()  # no pitch-flap coupling: no real mode
     assert data.facts() == {"ch4_bwd_real_q": -0.007, "ch4_bwd_real_0": -0.007}
-    assert "largest real none" in data.summary()
+    assert "without: pitch mode" in data.summary() and "no real root" in data.summary()
+    table = data.markdown().splitlines()
+    assert table[0].count("|") == 6 and len(table) == 2 + len(data.labels)
+    assert "no real root" in table[3] and "nan" not in data.markdown()
+    assert "nan" not in data.summary()
 
 
 def test_cg_sweep_pair_exports_both_sweeps_with_complex_parts_split(tmp_path):

@@ -159,3 +159,23 @@ def test_prose_carries_no_template_plurals_or_zero_percentages(page):
     for name, pattern in (("'(s)' plural", TEMPLATE_PLURAL), ("zero per cent with decimals", ZERO_PERCENT)):
         hits = [line.strip() for line in text.splitlines() if pattern.search(line)]
         assert not hits, f"{page}: {name}: {hits}"
+
+
+INDICATOR_STABLE = re.compile(r"\b(?:indicated stable|every azimuth stable|pairs? stable|azimuths? stable)\b",
+                              re.IGNORECASE)
+
+
+def test_the_indicator_rule_fires_on_the_printouts_of_issue_42():
+    assert INDICATOR_STABLE.search("inflow glauert , 12 axes : every azimuth stable up to mu = 1e-07")
+    assert INDICATOR_STABLE.search("reproduced: 216 of 216 (case, azimuth) pairs stable")
+    assert INDICATOR_STABLE.search("indicated stable (practical reading, not a certificate) at 24 of 24 azimuths")
+    assert not INDICATOR_STABLE.search("passes at every azimuth below mu = 0.0015")
+    assert not INDICATOR_STABLE.search("what linear theory calls stable")
+
+
+@pytest.mark.parametrize("page", sorted(p for p in PAGES if p.endswith(".ipynb")))
+def test_printed_outputs_never_call_the_indicators_verdict_stable(page):
+    """An azimuth where the paper's rule holds *passes* (book/notation.md, "Indicator")."""
+    _, printed = PAGES[page]
+    hits = [line.strip() for line in printed.splitlines() if INDICATOR_STABLE.search(line)]
+    assert not hits, f"{page}: the indicator passes, it does not find 'stable': {hits}"

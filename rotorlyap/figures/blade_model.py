@@ -74,6 +74,7 @@ from ..model.modes import (
     pitch_mode,
 )
 from ..model.parameters import CG_POSITIONS, THIN_AIRFOIL_CM_Q, BladeParameters, parameter_table
+from ..reporting import Rounded
 from .export import markdown_table as _markdown_table
 from .style import CG_COLORS, CG_MARKERS, CG_ROMAN, HINGE_COLORS, figure, finish
 
@@ -119,6 +120,20 @@ def _how_many(n: int, total: int) -> str:
 def _r3(x: float) -> float:
     """Rounded to 3 decimals, without a negative zero: the value both printed and glued."""
     return round(float(x), 3) + 0.0
+
+
+def _dash_list(values, decimals: int) -> str:
+    """Values to ``decimals`` decimals in brackets, "-" where a value is NaN (none exists)."""
+    return "[" + " ".join("-" if not np.isfinite(v) else f"{round(float(v), decimals) + 0.0:.{decimals}f}"
+                          for v in np.ravel(values)) + "]"
+
+
+def _boundary_words(x: float, grid) -> str:
+    """A boundary on a C.G. grid in words: "from 0.2564 c", or "none on the grid (0.200 c to
+    0.280 c)" when there is none (NaN)."""
+    if np.isfinite(x):
+        return "from %.4f c" % x
+    return "none on the grid (%.3f c to %.3f c)" % (float(np.min(grid)), float(np.max(grid)))
 
 
 def _r4(x: float) -> float:
@@ -378,7 +393,7 @@ def plot_hub_top_view(data: SchematicData, ax) -> None:
     _hub_x_dims(ax, data, -0.12, 0.075)
     _dim(ax, (0, 0.25), (data.root_cutout, 0.25), f"$R - R_1$ = {data.root_cutout:.3f} m",
          fontsize=8, text_offset=(0, 0.045))
-    ax.text(0.0, 0.16, f"$e_5$ = {data.hub_lengths[4]:.3f} m: the pitch axis passes through the pitch hinge",
+    ax.text(0.0, 0.16, f"$e_5$ = {data.hub_lengths[4]:.3g} m: pitch axis through the pitch hinge",
             fontsize=8, ha="left", va="center", color="tab:red")
     ax.text(x1, 0.065, "flap", fontsize=8, ha="center", color=HINGE_COLORS["flap"])
     ax.text(x2, 0.03, "lag", fontsize=8, ha="center", va="bottom", color=HINGE_COLORS["lag"])
@@ -549,13 +564,14 @@ class HingeBalanceData:
     damping: np.ndarray
 
     def summary(self) -> str:
-        """Equilibrium angles (deg, 3 decimals) and the moments (N m, 0.1 N m); the sum is at
-        round-off level and prints as 0.0."""
+        """Equilibrium angles (deg, 3 decimals) and the moments (N m, 0.1 N m), the unit once in
+        the header; the sum is at round-off level and prints as 0.0."""
         lines = ["hover equilibrium, %s: beta = %.3f, zeta = %.3f, theta = %.3f deg"
-                 % (self.case, *np.degrees(self.equilibrium))]
+                 % (self.case, *np.degrees(self.equilibrium)),
+                 "moments about the hinges (N m): conservative, aerodynamic, damping, sum"]
         for k, hinge in enumerate(HINGES):
             c, a, d = self.conservative[k], self.aerodynamic[k], self.damping[k]
-            lines.append("%-5s  conservative %9.1f  aerodynamic %9.1f  damping %4.1f  sum %5.1f  N m"
+            lines.append("%-5s %9.1f %9.1f %4.1f %4.1f"
                          % (hinge, c, a, d + 0.0, round(c + a + d, 1) + 0.0))
         return "\n".join(lines)
 
@@ -820,7 +836,7 @@ def figure_airfoil_coefficients(data: CoefficientData) -> Figure:
         plot_coefficient(data, axes[i, 0], c, ylim=limits[c][0], legend=(i == 0), band_labels=(i == 0))
         plot_coefficient(data, axes[i, 1], c, alpha_range=(-25, 30), ylim=limits[c][1], legend=False)
     for ax in axes[-1]:
-        ax.set_xlabel(r"angle of attack $\alpha$ (deg)")
+        ax.set_xlabel(r"angle of attack $\alpha_a$ (deg)")
     axes[0, 0].set_title("full range", fontsize=10)
     axes[0, 1].set_title("attached flow and stall", fontsize=10)
     return finish(fig)
@@ -932,7 +948,7 @@ def plot_angle_of_attack(data: AngleOfAttackData, ax, alpha_range: tuple[float, 
         ax.set_ylim(*alpha_range)
     ax.set_xlim(0, 1)
     ax.set_xlabel("$r/R$")
-    ax.set_ylabel(r"angle of attack $\alpha$ (deg)")
+    ax.set_ylabel(r"angle of attack $\alpha_a$ (deg)")
     ax.grid(alpha=0.3)
     if legend:
         ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.16, 1.0), handlelength=2.5)
@@ -1223,16 +1239,17 @@ class CGSweepPairData:
         return cols
 
     def summary(self) -> str:
-        """Pitch-mode growth and largest real eigenvalue on the grid (per rev, 3 decimals) and the
-        boundaries (fraction of chord, 4 decimals), as chapter 4 prints them."""
+        """Pitch-mode growth and largest real eigenvalue on the grid (per rev, 3 decimals; "-"
+        where there is none) and the boundaries (fraction of chord, 4 decimals; "none on the
+        grid" where there is none), as chapter 4 prints them."""
         lines = [f"C.G.: {self.with_damping.cg}"]
         for label, s in (("with pitch damping", self.with_damping),
                          ("without pitch damping", self.without_damping)):
             lines += [label,
-                      f"  growth of the oscillatory pitch mode: {np.round(s.pitch_growth, 3)}",
-                      f"  largest real eigenvalue: {np.round(s.largest_real, 3)}",
-                      "  flutter from %.4f c, divergence from %.4f c (linear interpolation; nan = none on "
-                      "the grid)" % (s.flutter_cg, s.divergence_cg)]
+                      f"  growth of the oscillatory pitch mode: {_dash_list(s.pitch_growth, 3)}",
+                      f"  largest real eigenvalue (-: no real root): {_dash_list(s.largest_real, 3)}",
+                      "  flutter: %s; divergence: %s (linear interpolation)"
+                      % (_boundary_words(s.flutter_cg, s.cg), _boundary_words(s.divergence_cg, s.cg))]
         return "\n".join(lines)
 
     def facts(self) -> dict[str, float]:
@@ -1623,7 +1640,8 @@ class DerivedTableData(HoverCasesData):
             f.flap_inertia * p.rotor_speed ** 2 * f.closed_forms.flap_frequency ** 2)
 
     def markdown(self) -> str:
-        """One row per quantity, one column per case; angles in deg (2 decimals)."""
+        """One row per quantity, one column per case; angles in deg (2 decimals, trailing zeros
+        kept)."""
         deg = math.degrees
         q = self.quantities
         rows = [("Lock number $\\gamma$", "-", *(round(d.lock_number, 3) for d in q)),
@@ -1631,13 +1649,13 @@ class DerivedTableData(HoverCasesData):
                 ("hover thrust coefficient $C_T$", "-", *(round(d.thrust_coefficient, 5) for d in q)),
                 ("$C_T / \\sigma$", "-", *(round(d.ct_over_sigma, 4) for d in q)),
                 ("hover inflow ratio $\\lambda_i = \\sqrt{C_T/2}$", "-", *(round(d.inflow_ratio, 4) for d in q)),
-                ("trimmed collective $\\theta_0$", "deg", *(round(deg(d.collective), 2) for d in q)),
-                ("coning (flap) angle $\\beta$", "deg", *(round(deg(d.equilibrium[0]), 2) for d in q)),
-                ("lag angle $\\zeta$", "deg", *(round(deg(d.equilibrium[1]), 2) for d in q)),
-                ("pitch-hinge angle $\\theta$", "deg", *(round(deg(d.equilibrium[2]), 2) for d in q)),
-                ("chord pitch to the hub plane", "deg", *(round(deg(d.chord_pitch), 2) for d in q)),
-                ("blade-element pitch for $C_T$", "deg", *(round(deg(d.blade_element_pitch), 2) for d in q)),
-                ("blade-element coning", "deg", *(round(deg(d.blade_element_coning), 2) for d in q))]
+                ("trimmed collective $\\theta_0$", "deg", *(f"{deg(d.collective):.2f}" for d in q)),
+                ("coning (flap) angle $\\beta$", "deg", *(f"{deg(d.equilibrium[0]):.2f}" for d in q)),
+                ("lag angle $\\zeta$", "deg", *(f"{deg(d.equilibrium[1]):.2f}" for d in q)),
+                ("pitch-hinge angle $\\theta$", "deg", *(f"{deg(d.equilibrium[2]):.2f}" for d in q)),
+                ("chord pitch to the hub plane", "deg", *(f"{deg(d.chord_pitch):.2f}" for d in q)),
+                ("blade-element pitch for $C_T$", "deg", *(f"{deg(d.blade_element_pitch):.2f}" for d in q)),
+                ("blade-element coning", "deg", *(f"{deg(d.blade_element_coning):.2f}" for d in q))]
         return markdown_table(("quantity", "unit", *(f"{CG_ROMAN[c]} {c}" for c in self.cases)), rows)
 
     def summary(self) -> str:
@@ -1650,17 +1668,19 @@ class DerivedTableData(HoverCasesData):
         ])
 
     def facts(self) -> dict[str, float]:
-        """The forward case's hover numbers (angles in deg) and the three collectives."""
+        """The forward case's hover numbers (angles in deg; ``ch4_chord_minus_hinge`` the chord
+        pitch less the pitch-hinge angle) and the three collectives."""
         deg = math.degrees
         f = self["forward"]
         out = {"ch4_solidity": round(f.solidity, 4), "ch4_ct": round(f.thrust_coefficient, 5),
                "ch4_ct_sigma": round(f.ct_over_sigma, 4), "ch4_inflow": round(f.inflow_ratio, 4),
-               "ch4_beta_fwd": round(deg(f.equilibrium[0]), 2), "ch4_lag_fwd": round(deg(f.equilibrium[1]), 1),
-               "ch4_theta_fwd": round(deg(f.equilibrium[2]), 2), "ch4_chord_pitch": round(deg(f.chord_pitch), 2),
-               "ch4_bet_pitch": round(deg(f.blade_element_pitch), 2),
-               "ch4_bet_coning": round(deg(f.blade_element_coning), 2),
-               "ch4_g_droop": round(deg(self.gravity_droop), 2)}
-        out.update({"ch4_coll_" + CASE_SHORT[c]: round(deg(d.collective), 2) for c, d in zip(self.cases, self.quantities)})
+               "ch4_beta_fwd": Rounded(deg(f.equilibrium[0]), 2), "ch4_lag_fwd": Rounded(deg(f.equilibrium[1]), 1),
+               "ch4_theta_fwd": Rounded(deg(f.equilibrium[2]), 2), "ch4_chord_pitch": Rounded(deg(f.chord_pitch), 2),
+               "ch4_bet_pitch": Rounded(deg(f.blade_element_pitch), 2),
+               "ch4_bet_coning": Rounded(deg(f.blade_element_coning), 2),
+               "ch4_g_droop": Rounded(deg(self.gravity_droop), 2),
+               "ch4_chord_minus_hinge": Rounded(deg(f.chord_pitch - f.equilibrium[2]), 2)}
+        out.update({"ch4_coll_" + CASE_SHORT[c]: Rounded(deg(d.collective), 2) for c, d in zip(self.cases, self.quantities)})
         return out
 
 
@@ -1771,13 +1791,15 @@ class AirModesData(HoverCasesData):
 
     def facts(self) -> dict[str, Any]:
         """The forward case's flap, lag and pitch modes with air (frequencies per rev, damping
-        ratios, shapes), gamma/16 and the classical nu_e."""
+        ratios, the flap mode's decay rate ``ch4_flap_air_decay`` per rev, shapes), gamma/16
+        (the classical flap-alone decay rate, per rev) and the classical nu_e."""
         f = self["forward"]
         p = self.params[self.cases.index("forward")]
         fl = {m.dominant_hinge: m for m in f.air_modes}
         nu_e = effective_flap_frequency(f.closed_forms.flap_frequency, f.lock_number, p.pitch_flap_coupling)
         return {"ch4_flap_air": round(fl["flap"].natural_frequency, 2),
                 "ch4_flap_air_zeta": round(fl["flap"].damping_ratio, 2),
+                "ch4_flap_air_decay": Rounded(-fl["flap"].growth_rate, 2),
                 "ch4_pitch_air": round(fl["pitch"].frequency, 2),
                 "ch4_pitch_air_zeta": round(fl["pitch"].damping_ratio, 3),
                 "ch4_gamma16": round(f.lock_number / 16, 2),
@@ -1971,12 +1993,26 @@ class VariantsData:
     largest_real: np.ndarray
     lag_stiffness: float
 
+    def markdown(self) -> str:
+        """The growth rates as a table (per rev, 3 decimals): one row per variant, the pitch
+        mode and the largest real root with the pitch damping and without; "no real root" where
+        all eigenvalues are complex."""
+        def root(x: float) -> str:
+            return "no real root" if np.isnan(x) else "%+.3f" % _r3(x)
+
+        rows = [(label, "%+.3f" % _r3(pg[0]), root(lr[0]), "%+.3f" % _r3(pg[1]), root(lr[1]))
+                for label, pg, lr in zip(self.labels, self.pitch_growth, self.largest_real)]
+        return markdown_table(("%s C.G. (%.3f c): variant" % (self.case, self.cg_position),
+                               "pitch mode, with pitch damping", "largest real root, with",
+                               "pitch mode, without", "largest real root, without"), rows)
+
     def summary(self) -> str:
         """Growth rates per variant (per rev, 3 decimals), as chapter 4 prints them."""
         lines = ["%s C.G. (%.3f c): growth rates per rev" % (self.case, self.cg_position)]
         for label, pg, lr in zip(self.labels, self.pitch_growth, self.largest_real):
-            out = ["%s: pitch mode %+.3f, largest real %s" % (name, _r3(g), "none" if np.isnan(x) else "%+.3f" % _r3(x))
-                   for name, g, x in zip(("pitch damping", "none"), pg, lr)]
+            out = ["%s: pitch mode %+.3f, %s" % (name, _r3(g), "no real root" if np.isnan(x)
+                                                    else "largest real root %+.3f" % _r3(x))
+                   for name, g, x in zip(("with pitch damping", "without"), pg, lr)]
             lines.append("  %-52s %s" % (label, "; ".join(out)))
         return "\n".join(lines)
 

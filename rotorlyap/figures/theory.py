@@ -78,16 +78,15 @@ def steps_summary(result: TechnicalStabilityResult) -> str:
     Returns
     -------
     str
-        The result's short ``repr`` and message, then one line per step: the largest ``W'``
+        The result's message (its verdict in the book's words), then one line per step: the largest ``W'``
         on the requested sphere (step 3, four decimals), ``A`` and ``alpha`` (steps 3 and 4,
         four and five decimals), the smallest and largest ``lambda0`` with their azimuths in
         degrees (step 5), the largest ``W'`` on the shells (two significant digits) and the
-        number of certified azimuths (step 6).
+        number of azimuths where step 6 passes.
     """
     lam = np.asarray(result.lambda0)
     psi_deg = np.degrees(result.psi)
     return "\n".join([
-        repr(result),
         result.message,
         "step 3: largest W' on ||x|| = %.2f: %.4f" % (result.A_requested, result.step3_max_dW),
         "step 3: A = %.4f;  step 4: alpha = %.5f" % (result.A, result.alpha),
@@ -248,14 +247,14 @@ def plot_phase_portrait(data: PhasePortraitData, ax, *, labels=("$y$", "$y'$")) 
     ax.set_xlabel(labels[0])
     ax.set_ylabel(labels[1])
     ax.set_aspect("equal")
-    # beside the axes, not over the motions
-    ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), fontsize=8, frameon=False,
+    # under the axes, not over the motions, two columns (readable at phone width)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=9, frameon=False,
               borderaxespad=0.0)
 
 
 def figure_phase_portrait(data: PhasePortraitData, *, title: str | None = None) -> Figure:
-    """A new 7 x 4.4 in figure of :class:`PhasePortraitData` (:func:`plot_phase_portrait`), the
-    legend right of the axes.
+    """A new 6 x 7 in figure of :class:`PhasePortraitData` (:func:`plot_phase_portrait`), the
+    state plane at equal aspect, the legend under the axes.
 
     Parameters
     ----------
@@ -268,7 +267,7 @@ def figure_phase_portrait(data: PhasePortraitData, *, title: str | None = None) 
     matplotlib.figure.Figure
         Laid out and already closed in pyplot (a notebook shows it only where it is glued).
     """
-    fig, ax = subplots(figsize=(7, 4.4))
+    fig, ax = subplots(figsize=(6, 7))
     plot_phase_portrait(data, ax)
     if title is not None:
         ax.set_title(title, fontsize=10)
@@ -937,7 +936,7 @@ def rule_comparison_data(growth: float = 0.5, pulse: float = 2.0, saturation: fl
 
 def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     """Left: the azimuth-norm plane with the band ``W >= alpha`` inside ``A``, the region
-    ``W' > 0`` and the start regions the paper's rule certifies; right: the motions started there.
+    ``W' > 0`` and the start regions the paper's rule passes; right: the motions started there.
 
     Returns
     -------
@@ -959,13 +958,13 @@ def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     ax.axhline(A, color="tab:green", lw=2, label="$A$")
     idx = data.paper.stable
     ax.vlines(np.degrees(data.paper.psi[idx]), 0, data.paper.lambda0[idx], color="tab:blue", lw=3,
-              label=r"certified starts, paper's rule")
+              label=r"starts the paper's rule passes")
     ax.set_xlim(0, 360)
     ax.set_ylim(0, 1.1 * A)
     ax.set_xticks(np.arange(0, 361, 90))
     ax.set_xlabel(r"azimuth $\psi$ (deg)")
     ax.set_ylabel(r"$\|x\|$")
-    ax.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=8, frameon=False)
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=9, frameon=False)
     for k in range(data.sim_norm.shape[1]):
         bx.plot(data.sim_psi, data.sim_norm[:, k] / A, color="tab:blue", lw=1)
     bx.axhline(1.0, color="tab:green", lw=2, label=r"$\|x\| = A$")
@@ -973,5 +972,5 @@ def figure_rule_comparison(data: RuleComparisonData) -> Figure:
     bx.set_xlabel("revolutions after the start")
     bx.set_ylabel(r"$\|x\| / A$")
     bx.set_ylim(0, 1.1 * max(1.0, float(data.sim_norm.max() / A)))
-    bx.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=8, frameon=False)
+    bx.legend(loc="upper left", bbox_to_anchor=(-0.02, -0.2), fontsize=9, frameon=False)
     return finish(fig)

@@ -277,11 +277,16 @@ def technical_stability(
     band: str = "level",
     psi_free: bool = False,
 ) -> TechnicalStabilityResult:
-    """Certify bounded motion of ``x' = f(psi, x)`` with the Liapunov function ``W``.
+    """Run the six-step algorithm for ``x' = f(psi, x)`` with the Liapunov function ``W``: a
+    numerical certificate of bounded motion with the sound rule, the paper's indicator with the
+    paper's rule.
 
     Runs steps 3-6 of Narkiewicz & Lucjanek's algorithm (module docstring) and returns, for
-    each of ``n_psi`` azimuths, the radius ``lambda0`` of a start region from which every
-    motion stays inside ``||x|| < A``.
+    each of ``n_psi`` azimuths, the radius ``lambda0`` of a start region. With
+    ``rule="sound"`` every motion started inside it stays inside ``||x|| < A`` as far as the
+    search of the band can tell (a numerical certificate, not a proof); with ``rule="paper"``
+    step 6 is checked at the start azimuth alone, and an azimuth where it holds only passes
+    the paper's indicator (its motions can leave the bound, chapter 2 of the book).
 
     Parameters
     ----------
