@@ -808,7 +808,7 @@ def plot_sweep(data: SweepFigureData, *, x_label: str, series_label: str):
 
 
 def mode_summary(data) -> str:
-    """The modes of a fan plot or of a Floquet sweep as chapter 9 prints them, in words.
+    """The modes of a fan plot or of a Floquet sweep as chapter 11 prints them, in words.
 
     The book keeps one symbol for one quantity: zeta is the lag angle and sigma the solidity,
     so a mode's damping ratio and its growth rate are named, not given those symbols, as the
