@@ -71,7 +71,12 @@ def test_steady_motion_facts_round_the_distances_and_list_the_missing_advance_ra
     assert facts == {"ch7_dist_025": 2.4, "ch7_dist_25": 6.8, "ch7_res_fw": 0.002, "ch7_res_all": 0.003,
                      "ch7_b1s_25": -4.2, "ch7_b1c_25": -2.4, "ch7_beta0_25": 7.5, "ch7_th1s_25": -2.8,
                      "ch7_n_mu": 3, "ch7_found_fn": 6, "ch7_miss_bwd": "0.025",
-                     "ch7_found_fn_text": "all 6: 2 C.G. positions × 3 advance ratios", "ch7_kx": 1.2}
+                     "ch7_found_fn_text": "all 6: 2 C.G. positions × 3 advance ratios", "ch7_kx": 1.2,
+                     **fv.settings_facts()}
+    # the settings the text quotes are the functions' defaults (not typed in the text)
+    assert fv.settings_facts() == {"ch7_colloc_test": 64, "ch7_colloc_n": 256, "ch7_table_n": 4096,
+                                   "ch7_floquet_steps": 1024, "ch7_lyap_steps": 4096, "ch7_opt_dirs": 128,
+                                   "ch7_opt_evals": 200}
     assert all(type(v) in (float, int, str) for v in facts.values())
 
 

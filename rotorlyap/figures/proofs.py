@@ -509,7 +509,7 @@ class ReverseFlowBlock:
         """One line: how many intervals are blocked, where, why."""
         lo, hi = self.span()
         return (f"mu = {self.mu:g}: {int(self.blocked.sum())} of {self.n_intervals} intervals blocked, "
-                f"psi {lo:.0f} to {hi:.0f} deg" + (f" ({self.reason})" if self.reason else ""))
+                f"psi {lo:.0f} to {hi:.0f} deg" + (f": {self.reason}" if self.reason else ""))
 
     def facts(self) -> dict:
         """``ch10_block_{mu,lo,hi}``: the advance ratio and the blocked azimuths (whole deg)."""

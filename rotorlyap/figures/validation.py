@@ -271,7 +271,29 @@ class SteadyMotions:
                                   "advance ratios"),
             "ch7_kx": GLAUERT_KX,
             "ch7_miss_bwd": _mu_list(self.missing()["backward"]),
+            **settings_facts(),
         }
+
+
+def settings_facts() -> dict:
+    """The method settings the chapter's text quotes, read from the functions' defaults: the
+    collocation points of the periodic motion (the quick test of existence, the final motion),
+    the azimuths of its table, the Magnus steps of the Floquet analysis and of the periodic
+    Lyapunov equation, and the directions and objective evaluations of the weight optimisation."""
+    import inspect
+
+    from ..analysis.functions import DEFAULT_N_STEPS
+
+    def default(fun, name):
+        return inspect.signature(fun).parameters[name].default
+
+    return {"ch7_colloc_test": default(periodic_motion, "n_points"),
+            "ch7_colloc_n": default(steady_motions, "n_points"),
+            "ch7_table_n": default(steady_motions, "n_table"),
+            "ch7_floquet_steps": default(floquet_data, "n_steps"),
+            "ch7_lyap_steps": DEFAULT_N_STEPS,
+            "ch7_opt_dirs": default(optimised_quadratic_function, "n_directions"),
+            "ch7_opt_evals": default(optimised_quadratic_function, "max_evaluations")}
 
 
 def _steady_motion(task: tuple):
