@@ -15,8 +15,9 @@ then :mod:`rotorlyap.figures` (one module per chapter) and the command line
 (:mod:`rotorlyap.cli`). :mod:`rotorlyap.conventions` holds the names and defaults they share,
 :mod:`rotorlyap.errors` the errors, :mod:`rotorlyap.reporting` how a number is printed.
 
-The names below are the ones a chapter needs; each is imported from its module on first use,
-so ``import rotorlyap.methods`` loads nothing of the model.
+The names a chapter needs (``rotorlyap.__all__``; the API reference lists them) are
+importable from ``rotorlyap`` itself; each is imported from its module on first use, so
+``import rotorlyap.methods`` loads nothing of the model.
 """
 
 from __future__ import annotations

@@ -51,6 +51,8 @@ def test_an_unstable_blade_is_not_certified_and_says_why():
     c = certify(BladeParameters.flight_case("backward"), 0.0)
     assert not c.certified and c.result is None and c.bound == 0.0
     assert "linearised blade is unstable" in c.message
+    # the growth rate once, in one message without nested parentheses (issue 42)
+    assert c.summary().count("per rev") == 1 and "((" not in c.summary() and "nothing can be certified (" not in c.message
     assert c.growth_rate == pytest.approx(
         blade_floquet(c.trim.params, 0.0, steady=c.trim.steady).exponents.real.max(), abs=1e-12)
     assert c.growth_rate > 0.0

@@ -87,3 +87,33 @@ def test_forensic_data_on_the_papers_own_row():
     assert fd.first_side[0][0] == "both" and fd.first_mu[0, 0] == 0.05
     assert not fd.matches.any()
     assert "0.05B" in fd.pivot_markdown()
+
+
+def test_printouts_and_tables_use_the_books_words_and_units():
+    """No "nan" in a printout (a missing value is "–"), a thrust choice is the weight it carries in
+    kN, the pitch-flap coupling is written with its symbol, and the quoted model parameters are
+    the package's own (the C81 agreement within the 3.5 % the compressibility tests allow)."""
+    assert flight._fmt([1.0, float("nan"), 2.666], 2) == "[1.00 – 2.67]"
+    assert flight._short("4800 kg") == "weight of 4800 kg (47.1 kN)"
+    assert flight._short(-0.4) == "tan δ₃ = −0.4"
+    facts = flight.model_facts()
+    p = BladeParameters.table_i("forward")
+    assert facts["ch8_flat_plate_area"] == f"{p.flat_plate_area:.1f}" and facts["ch8_mass_t"] == "6.4"
+    assert facts["ch8_mach_cap"] == "0.8" and facts["ch8_c81_mach"] == "0.6"
+    assert 0.0 < float(facts["ch8_c81_dev"].split()[0]) <= 3.5
+
+
+def test_the_disc_figure_is_round_and_fits_the_column():
+    """Fig. 8.2's discs have equal aspect and the figure is not wider than the book's column,
+    so the page shows it at its own size (a rescaled figure drew them as ellipses)."""
+    import matplotlib.pyplot as plt
+
+    from rotorlyap.figures.style import BOOK_DPI, PAGE_WIDTH_PX
+
+    dd = flight.disc_data("forward", 0.25, n_azimuth=12, n_stations=6)
+    fig = flight.figure_disc(dd)
+    fig.draw_without_rendering()
+    assert all(ax.get_aspect() == 1.0 for ax in fig.axes[:2])
+    width_px = (fig.get_tightbbox(fig._get_renderer()).width + 0.2) * BOOK_DPI
+    assert width_px <= PAGE_WIDTH_PX
+    plt.close(fig)

@@ -36,7 +36,8 @@ def test_the_examples_of_the_method_chapters():
     ex = proofs.example_proofs()
     (na, nl), (pa, pl) = ex.oscillator_numerical, ex.oscillator_proved
     assert 0 < pa <= na and 0 < pl <= nl
-    assert not ex.counterexample_proved and ex.facts()["ch10_cx_proved"] == "no"
+    assert not ex.counterexample_proved and ex.facts()["ch10_cx_proved"] == "not proved"
+    assert ex.summary().splitlines()[1] == "counterexample of chapter 2: not proved"  # not "proved False"
 
 
 def test_bound_text_states_round_off_as_a_floor():

@@ -70,7 +70,13 @@ def test_steady_motion_facts_round_the_distances_and_list_the_missing_advance_ra
     facts = motions.facts()
     assert facts == {"ch7_dist_025": 2.4, "ch7_dist_25": 6.8, "ch7_res_fw": 0.002, "ch7_res_all": 0.003,
                      "ch7_b1s_25": -4.2, "ch7_b1c_25": -2.4, "ch7_beta0_25": 7.5, "ch7_th1s_25": -2.8,
-                     "ch7_n_mu": 3, "ch7_found_fn": 6, "ch7_miss_bwd": "0.025"}
+                     "ch7_n_mu": 3, "ch7_found_fn": 6, "ch7_miss_bwd": "0.025",
+                     "ch7_found_fn_text": "all 6: 2 C.G. positions × 3 advance ratios", "ch7_kx": 1.2,
+                     **fv.settings_facts()}
+    # the settings the text quotes are the functions' defaults (not typed in the text)
+    assert fv.settings_facts() == {"ch7_colloc_test": 64, "ch7_colloc_n": 256, "ch7_table_n": 4096,
+                                   "ch7_floquet_steps": 1024, "ch7_lyap_steps": 4096, "ch7_opt_dirs": 128,
+                                   "ch7_opt_evals": 200}
     assert all(type(v) in (float, int, str) for v in facts.values())
 
 
@@ -139,11 +145,11 @@ def floquet():
 def test_floquet_facts_find_the_flip_instability_of_the_backward_cg(floquet):
     facts = floquet.facts()
     assert facts["ch7_flip_mu"] == 0.1 and facts["ch7_flip_m"] == -1.1 and facts["ch7_n_unstable_bwd"] == 1
-    assert facts["ch7_n_unstable_bwd_text"] == "1 advance ratio"  # not "1 advance ratio(s)" (issue 42)
+    assert facts["ch7_n_unstable_bwd_text"] == "this advance ratio of the grid only"  # not "at 1 advance ratio"
     assert facts["ch7_bwd_sig_max"] == round(np.log(1.1) / TWO_PI, 3)
     assert facts["ch7_bwd_sig0"] == round(np.log(0.96) / TWO_PI, 4)
     assert facts["ch7_pitch_om0"] == 5.09 and facts["ch7_flap_om25"] == 0.64 and facts["ch7_lag_om0"] == 0.086
-    assert len(facts) == 21
+    assert len(facts) == 22 and facts["ch7_lag_sig0"] < 0  # the lag mode is damped in hover
 
 
 def test_floquet_summary_lists_every_forward_track_and_the_largest_unstable_multiplier(floquet):
@@ -303,7 +309,7 @@ def test_scan_summary_counts_stable_azimuths_and_names_why_nothing_is_certified(
     assert lines[lines.index("energy, strict, periodic motion") + 1] == "   forward       s3      s3      s3"
     j = lines.index("quadratic, optimised Q, strict, periodic motion")
     assert lines[j + 2].split()[-1] == "band"  # the neutral C.G., optimised, mu = 0.15
-    assert "(stable/step-6-fails azimuths of 4;" in lines[-2]
+    assert "(passing or certified / step-6-fails azimuths of 4;" in lines[-2]
     assert lines[-1] == "optimised weights (forward C.G.): [1. 1. 1. 1. 1. 1.]"
 
 
@@ -332,8 +338,9 @@ def test_scan_facts_count_certified_cells_and_list_the_advance_ratios_of_each_ou
     assert (f["ch7_ncert_q_bwd"], f["ch7_ncert_o_bwd"], f["ch7_lam_q0_bwd"]) == (6, 4, 0.0019)
     assert (f["ch7_bwd_cert_mu"], f["ch7_bwd_s3_mu"], f["ch7_bwd_band_mu"]) == ("0", "", "")
     assert f["ch7_neu_opt_none_mu"] == "0.15"
-    assert ("backward, Q = I: all azimuths at mu = [0.] ; some at [0.15] ; step 3 failed at [] ; "
-            "(h) failed on the band at []") in scan.certificate_summary()
+    summary = scan.certificate_summary()
+    assert "backward, Q = I: every azimuth certified at mu = 0; some azimuths at mu = 0.15" in summary.splitlines()
+    assert "[]" not in summary and " | " not in summary  # no empty lists, no rows of the table below it
 
 
 def test_scan_figure_has_a_panel_per_candidate_and_case_and_is_closed(scan):
@@ -361,8 +368,8 @@ def test_rule_changes_list_the_cells_whose_verdict_or_bounds_moved():
     assert d.rows()[1] == ("quadratic Q = I, backward C.G.", "0.2", "8 -> 0", "0.30 -> 0", "0.010 -> -")
     assert d.facts() == {"ch7_rule_changed": 2, "ch7_rule_cells": 4, "ch7_rule_rtol_pct": 10.0, "ch7_rule_lost": 1,
                          "ch7_rule_gained": 0}
-    assert d.summary().splitlines()[-1] == ("changed: 2 of 4 cells; passed by the paper's rule, not certified "
-                                            "by the sound rule: 1; never the reverse: True")
+    assert d.summary() == ("changed: 2 of 4 cells; passed by the paper's rule, not certified "
+                           "by the sound rule: 1; certified by the sound rule, not passed by the paper's: none")
     assert d.markdown().splitlines()[0].startswith("| function, case | mu | azimuths of 24, paper's -> sound |")
     e = fv.RuleChanges(labels=("x",), mu_values=np.array([0.1]), n_paper=np.array([[-1]]),
                        n_sound=np.array([[-1]]), A_paper=np.array([[nan]]), A_sound=np.array([[nan]]),
@@ -424,13 +431,17 @@ def test_validation_facts_compare_the_observed_bounded_region_with_the_certified
     assert (f["ch7_obs_all_bounded"], f["ch7_obs_ratio_q"], f["ch7_obs_ratio_o"]) == (0.5, 10.0, 2.0)
     assert f["ch7_growth_ratio"] == 1.2
     assert (f["ch7_hov_cert_neu"], f["ch7_hov_viol_bwd"], f["ch7_hov_paper_left_bwd"]) == (1, 0, 1)
+    # the starts on ||x|| = A "reach A" at once; none inside A reached it
+    assert (f["ch7_on_sphere_hover"], f["ch7_on_sphere_fwd"], f["ch7_inside_reached_fwd"]) == (2, 2, 0)
+    assert (f["ch7_inside_reached_neu"], f["ch7_inside_reached_bwd"]) == (0, 0)
 
 
 def test_validation_table_has_a_row_per_function_and_validation(validations, tmp_path):
     table = validations.confusion_table().splitlines()
     assert table[0] == "| " + " | ".join(fv.CONFUSION_HEADER) + " |"
     assert len(table) == 2 + 12
-    assert validations.summary().splitlines()[0].endswith("practical (2, 0, 3, 1, 0)")
+    assert validations.summary().splitlines()[0] == ("forward C.G., mu = 0: starts on ||x|| = A 2, started inside A "
+                                                     "and reached it 0")
     figure_csv(validations.export(), tmp_path / "v.csv")
     fig = fv.figure_validation(validations)
     assert len(fig.axes) == 1 and _closed(fig)
@@ -480,8 +491,8 @@ def long_runs():
 def test_motion_summary_bounds_the_tolerance_check_by_a_power_of_ten(long_runs):
     lines = long_runs.summary().splitlines()
     assert lines[-1] == "relative change of the last peak with ten times tighter tolerances: < 1e-03 for every motion"
-    assert lines[0].startswith("flutter: ('limit cycle outside A', 'limit cycle outside A'); peak norm in the last "
-                               "revolution [5. 5.]; pitch 1.4 to 12.4 deg")
+    assert lines[0].startswith("flutter: both starts: settles on a periodic motion outside A; peak norm in the last "
+                               "revolution 5.0 5.0; pitch 1.4 to 12.4 deg")
     assert long_runs.facts() == {"ch7_lc_check": 0.001, "ch7_ff_ref_max": 4.67, "ch7_ff_peak": 5.0}
 
 

@@ -245,13 +245,16 @@ def test_read_blade_names_the_file_not_its_folder_and_lists_what_it_left_to_the_
     table = b.markdown()
     assert "| `pitch_flap_coupling` | -0.4 | - | template: Table I (tan delta3) |" in table
     assert "| `radius` | 7.49 | m | the file: PumaBladeData |" in table
+    assert "| `hub_elements` | (0.05342, 0, 0, 0.02643, 0) | × R1 (blade length) |" in table
     assert "left to the template: pitch_flap_coupling, pitch_stiffness, lag_damping" in b.summary()
 
 
 def _certificate(mu, certified):
     """A stand-in for a Certificate: the fields the table reads."""
     per = {"flap": (0.234, 6.44), "lag": (0.2, 1.6), "pitch": (0.11, 16.0)}
+    reach = {"flap": (0.324, 19.84), "lag": (0.29, 2.8), "pitch": (0.57, 75.3)} if certified else {}
     return SimpleNamespace(mu=mu, certified=certified, growth_rate=-0.1234, start_region_per_hinge=per,
+                           start_set_per_hinge=reach,
                            bound_per_hinge={h: (10 * a, 10 * b) for h, (a, b) in per.items()},
                            summary=lambda: f"mu = {mu:g}")
 
@@ -264,6 +267,8 @@ def test_certificate_table_reads_each_hinge_and_shows_no_region_where_nothing_is
     facts = t.facts("x")
     assert facts["x_mu00_flap_start"] == "0.23" and facts["x_mu00_flap_rate_start"] == "6.4"
     assert facts["x_mu30_verdict"] == "not certified" and facts["x_mu00_flap_bound"] == "2.34"
+    # the start set along one hinge alone, beside the ball (which holds for any mix of hinges)
+    assert (facts["x_mu00_flap_set"], facts["x_mu00_flap_rate_set"], facts["x_mu30_flap_set"]) == ("0.32", "19.8", "–")
     with pytest.raises(ValueError, match="at least one certificate"):
         your_blade.certificate_table([])
 
@@ -285,11 +290,12 @@ def _sweep_result(missing=False):
 
 def test_sweep_figure_data_arranges_a_full_grid_by_line_and_refuses_a_partial_one():
     """Each line is one value of the series column, x sorted, the growth and the start region
-    taken from their columns; nothing certified shows as start region 0."""
+    taken from their columns; nothing certified has no start region (NaN, printed "–"), not 0."""
     data = your_blade.sweep_figure_data(_sweep_result(), "d", "k")
     assert data.series == (1.0, 2.0) and data.x.tolist() == [-0.1, 0.0, 0.1]
     np.testing.assert_allclose(data.growth[1], [-0.5, -0.4, -0.3])
-    np.testing.assert_allclose(data.start_flap_deg[0], [0.0, 1.0, 1.1])
+    np.testing.assert_allclose(data.start_flap_deg[0], [np.nan, 1.0, 1.1])
+    assert "  flap start (deg): [–, 1.00, 1.10]" in data.summary().splitlines()
     assert data.certified.tolist() == [[False, True, True], [False, True, True]]
     assert "k = 1: certified at [0.0, 0.1]" in data.summary()
     with pytest.raises(ValueError, match="not a full grid"):
@@ -304,4 +310,8 @@ def test_plot_sweep_draws_two_panels_with_a_line_and_markers_per_series():
     assert len(a.get_legend().get_texts()) == 2
     assert a.get_ylabel() == "largest Floquet real part (per rev)"
     assert b.get_ylabel() == "certified flap start region (deg)"
+    # the not-certified points are crosses on the axis, not circles at a start region of 0
+    crosses = [ln for ln in b.get_lines() if ln.get_marker() == "x"]
+    assert crosses and all(np.all(ln.get_ydata() == 0.0) for ln in crosses)
+    assert not any(ln.get_marker() in ("o", "s") and np.any(np.asarray(ln.get_ydata()) == 0.0) for ln in b.get_lines())
     assert not plt.fignum_exists(fig.number)

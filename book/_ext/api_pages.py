@@ -13,6 +13,14 @@ module the overview no longer links is removed; the folder is not committed.
 One page per module keeps every page short enough to read and print (issue 42: the single
 page was 495,000 px tall); ``tests/test_api_reference.py`` checks that every public module has
 its page.
+
+Two modules need more than the plain entry (:data:`SPECIAL`): :mod:`rotorlyap.methods.intervals`
+re-exports the float-ball class of :mod:`rotorlyap.methods.balls`, so its page leaves that class
+to the page of the module that defines it (two documented ``Balls`` would make every
+cross-reference to it ambiguous); and the module docstring of :mod:`rotorlyap.methods.balls`,
+the rounding facts every radius rests on, is plain text with indented formulas, not
+reStructuredText, so its page declares the module and documents its public names one by one
+(the docstring is read in the source).
 """
 
 from __future__ import annotations
@@ -58,6 +66,43 @@ def linked_modules(overview_text: str) -> list[tuple[str, str]]:
     return list(found.items())
 
 
+def _balls_entries() -> str:
+    """The reStructuredText of :mod:`rotorlyap.methods.balls`'s page: the module declared, then
+    each name of its ``__all__`` documented on its own (class, function or constant)."""
+    import importlib
+    import inspect
+
+    module = "rotorlyap.methods.balls"
+    mod = importlib.import_module(module)
+    lines = [f".. py:module:: {module}", "",
+             "The rounding facts every radius rests on are stated in the module's docstring, in its "
+             "source file (``rotorlyap/methods/balls.py``).", ""]
+    for name in mod.__all__:
+        obj = getattr(mod, name)
+        kind = "autoclass" if inspect.isclass(obj) else "autofunction" if callable(obj) else "autodata"
+        lines.append(f".. {kind}:: {module}.{name}")
+        if kind == "autoclass":
+            lines.append("   :members:")
+        lines.append("")
+    return "\n".join(lines)
+
+
+SPECIAL = {
+    "rotorlyap.methods.intervals": ".. automodule:: rotorlyap.methods.intervals\n   :exclude-members: Balls",
+    "rotorlyap.methods.balls": _balls_entries,
+}
+"""Modules whose page needs more than ``.. automodule:: <module>``: the reStructuredText of the
+page's entry, or a function that makes it (called when the page is written)."""
+
+
+def page_entry(module: str) -> str:
+    """The reStructuredText that documents ``module`` on its page."""
+    special = SPECIAL.get(module)
+    if special is None:
+        return f".. automodule:: {module}"
+    return special() if callable(special) else special
+
+
 def page_text(module: str, what: str) -> str:
     """The Markdown source of ``module``'s page, described by ``what``."""
     if not module or not what:
@@ -65,7 +110,7 @@ def page_text(module: str, what: str) -> str:
     return (f"{MARK}\n"
             f"# `{module}`\n\n"
             f"{what} (part of the {{ref}}`API reference <api>`).\n\n"
-            f"```{{eval-rst}}\n.. automodule:: {module}\n```\n")
+            f"```{{eval-rst}}\n{page_entry(module)}\n```\n")
 
 
 def write_pages(root: Path) -> list[Path]:

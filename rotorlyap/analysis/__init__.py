@@ -18,10 +18,17 @@
 * :mod:`~rotorlyap.analysis.certificate_file`: a certificate as one JSON file
   (:meth:`Certificate.save`) and :func:`~rotorlyap.analysis.certificate_file.verify`, which checks
   it from nothing but the file;
+* :mod:`~rotorlyap.analysis.enclosure`: the blade's equations and Jacobian enclosed in ball
+  arithmetic, over an interval of azimuth and a tube of states;
+* :mod:`~rotorlyap.analysis.taylor_enclosure`: :func:`taylor_evaluate`, the blade's equations
+  and Jacobian in Taylor models;
 * :mod:`~rotorlyap.analysis.proof`: :func:`prove_blade`, the quadratic function's certificate
-  proved by ball arithmetic;
-* :mod:`~rotorlyap.analysis.taylor_enclosure`: :func:`taylor_evaluate`, the hovering blade's
-  equations and Jacobian on Taylor models (issue 41; not yet used by the proofs);
+  proved with Taylor models and a branch and bound over the band (ball arithmetic alone:
+  ``method="balls"``);
+* :mod:`~rotorlyap.analysis.modes`: the blade's frequencies, hover modes against the rotor
+  speed and Floquet modes against the advance ratio;
+* :mod:`~rotorlyap.analysis.disturbance`: the motion of the full nonlinear blade after a
+  disturbance, beside a certificate's bound;
 * :mod:`~rotorlyap.analysis.sweep`: :func:`sweep`, certificates over a grid of blades and
   conditions, on every core or a Dask cluster, as one table.
 """

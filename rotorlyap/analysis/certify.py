@@ -231,6 +231,8 @@ class Certificate:
         head = (f"mu = {self.mu:g}, {self.condition}: {'certified' + by if self.certified else 'not certified'}"
                 f" (largest Floquet real part {self.growth_rate:.3f} per rev)")
         if not self.certified:
+            if "growth rate" in self.message:  # the message gives the linear reason itself: say it once
+                return f"mu = {self.mu:g}, {self.condition}: not certified:\n  {self.message}"
             return head + "\n  " + self.message
         fmt = lambda d: ", ".join(f"{h} {v[0]:.2f} deg / {v[1]:.1f} deg/s" for h, v in d.items())  # noqa: E731
         lines = [head, f"  start within (ball lambda0): {fmt(self.start_region_per_hinge)}"]
@@ -351,8 +353,9 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
                                   A=A_quadratic if family == "quadratic" else None, scales=a, n_psi=n_psi,
                                   **engine_options)
         except NotAsymptoticallyStableError as exc:
-            return None, None, (f"the linearised blade is unstable (largest Floquet real part {growth:.3f} "
-                                f"per rev): no quadratic function exists, nothing can be certified ({exc})")
+            return None, None, (f"the linearised blade is unstable (spectral radius {exc.spectral_radius:.4g}, "
+                                f"growth rate {growth:+.3f} per rev): no quadratic function exists, so no "
+                                "certificate with a small bound is possible")
         except _NotDesigned as exc:
             return None, exc.function, (f"the {exc.function.label} design found no function that decreases "
                                         f"on a shell about the steady motion ({exc.function.design!r})")

@@ -11,9 +11,13 @@ figure.
 * :mod:`~rotorlyap.figures.paper`: chapters 5 and 6, the paper's Figs 4-8;
 * :mod:`~rotorlyap.figures.validation`: chapter 7, beyond the paper;
 * :mod:`~rotorlyap.figures.flight`: chapter 8, the forward flight of a trimmed helicopter;
-* :mod:`~rotorlyap.figures.your_blade`: chapter 9, your own blade;
-* :mod:`~rotorlyap.figures.proofs`: chapter 10, certificates as proofs;
-* :mod:`~rotorlyap.figures.large_disturbances`: chapter 11, how large a disturbance;
+* :mod:`~rotorlyap.figures.proofs`: chapter 9, certificates as proofs;
+* :mod:`~rotorlyap.figures.large_disturbances`: chapter 10, how large a disturbance;
+* :mod:`~rotorlyap.figures.your_blade`: chapter 11, your own blade;
 * :mod:`~rotorlyap.figures.style` (shared colours), :mod:`~rotorlyap.figures.export` (CSV,
-  glue, tables), :mod:`~rotorlyap.figures.commands` (the command line's figures).
+  glue, tables), :mod:`~rotorlyap.figures.commands` and
+  :mod:`~rotorlyap.figures.blade_commands` (the command line's figures).
+
+The chapter numbers are the book's; the notebooks' file names (``09_your_own_blade``,
+``10_proofs``, ``11_large_disturbances``) keep the order in which the chapters were written.
 """

@@ -30,7 +30,7 @@ from ..analysis.sweep import process_map, worker_count
 from ..conventions import PAPER_TEST_DISTURBANCES, TWO_PI
 from ..errors import NotAsymptoticallyStableError, TrimError
 from ..model.blade import Blade
-from ..model.compressibility import validity_map
+from ..model.compressibility import C81_NACA0012_CL_2DEG, MACH_CAP, prandtl_glauert_factor, validity_map
 from ..model.forward_trim import forward_flight_trim
 from ..model.inflow import kx_factor
 from ..reporting import count
@@ -92,7 +92,8 @@ def _lift_ratio_or_nan(params: BladeParameters, mu: float, target: str) -> tuple
 
 
 def _fmt(values, digits: int) -> str:
-    return "[" + " ".join("nan" if not np.isfinite(v) else f"{v:.{digits}f}" for v in np.ravel(values)) + "]"
+    """``[1.00 – 2.67]``: fixed decimals, "–" where there is no value (NaN)."""
+    return "[" + " ".join("–" if not np.isfinite(v) else f"{v:.{digits}f}" for v in np.ravel(values)) + "]"
 
 
 # --------------------------------------------------------------------------------------
@@ -126,7 +127,8 @@ class TrimData:
         The same with the paper's incompressible sections (the trim alone changed), (k, m).
     retreating_alpha_deg : numpy.ndarray
         Mean angle of attack of the outer 10 % of the span at psi = 270 deg, deg, (2, m):
-        paper's condition, trimmed (forward C.G.).
+        paper's condition, trimmed (forward C.G.); NaN where the paper's condition has no
+        periodic motion.
     """
 
     cases: tuple
@@ -142,7 +144,7 @@ class TrimData:
 
     def summary(self) -> str:
         """Per case: the paper's lift over weight (0.01), the trimmed controls and tilt (0.01 deg),
-        both growth rates (0.001 per rev)."""
+        both growth rates (0.001 per rev); "–" where the paper's condition has no periodic motion."""
         lines = [f"mu: {_fmt(self.mu_values, 3)}"]
         for i, case in enumerate(self.cases):
             lines += [
@@ -158,6 +160,8 @@ class TrimData:
             ]
         lines.append(f"forward C.G., outboard angle of attack at psi = 270 deg, deg: paper's "
                      f"{_fmt(self.retreating_alpha_deg[0], 1)}, trimmed {_fmt(self.retreating_alpha_deg[1], 1)}")
+        if not np.isfinite(self.paper_lift_ratio).all():
+            lines.append("(–: the paper's condition has no periodic motion near hover there)")
         return "\n".join(lines)
 
     def facts(self) -> dict:
@@ -190,7 +194,28 @@ class TrimData:
             "ch8_growth_bw_trim25": f"{self.growth_trimmed[-1, j]:.3f}",
             "ch8_bw_stable_from": (f"{self.mu_values[np.argmax(self.growth_trimmed[-1] < 0)]:g}"
                                    if (self.growth_trimmed[-1] < 0).any() else "never"),
+            **model_facts(),
         }
+
+
+#: Highest Mach number of the C81 NACA 0012 table up to which the chapter quotes the agreement of
+#: the Prandtl-Glauert lift factor with it.
+C81_CHECK_MACH = 0.6
+
+
+def model_facts() -> dict:
+    """The parameters of the chapter's model that its text quotes: the flat-plate area (m², 0.1)
+    and the helicopter's mass (t, 0.1) of :class:`BladeParameters`, the pitch radius of gyration
+    (chord), the Mach number above which the Prandtl-Glauert factor is held, and the largest
+    deviation of that factor from the C81 NACA 0012 table's lift at 2 deg up to
+    :data:`C81_CHECK_MACH` (per cent, one decimal)."""
+    p = BladeParameters.table_i("forward")
+    table = C81_NACA0012_CL_2DEG
+    dev = max(abs(cl / (table[0.0] * float(prandtl_glauert_factor(m))) - 1.0)
+              for m, cl in table.items() if m <= C81_CHECK_MACH)
+    return {"ch8_flat_plate_area": f"{p.flat_plate_area:.1f}", "ch8_mass_t": f"{p.helicopter_mass / 1000:.1f}",
+            "ch8_pitch_k": f"{p.pitch_radius_of_gyration:g}", "ch8_mach_cap": f"{MACH_CAP:g}",
+            "ch8_c81_mach": f"{C81_CHECK_MACH:g}", "ch8_c81_dev": f"{100 * dev:.1f} %"}
 
 
 def _outboard_alpha_270(params: BladeParameters, mu: float, motion) -> float:
@@ -227,7 +252,7 @@ def trim_data(cases=CASES, mu_values=MU_TRIM) -> TrimData:
             ratio[i, j], paper = _lift_ratio_or_nan(BladeParameters.table_i(case), float(mu), "none")
             if paper is not None:
                 g_paper[i, j] = _growth(paper.params, float(mu), paper.steady)
-            if i == 0 and mu > 0:
+            if i == 0:
                 a270[1, j] = _outboard_alpha_270(tr.params, float(mu), tr.motion)
                 if paper is not None:
                     a270[0, j] = _outboard_alpha_270(paper.params, float(mu), paper.motion)
@@ -366,10 +391,14 @@ def disc_data(case: str = "forward", mu: float = 0.25, n_azimuth: int = 72, n_st
                     stall_deg=tuple(math.degrees(a) for a in v0.stall_angles))
 
 
-def figure_disc(data: DiscData, figsize=(8.8, 5.6)):
+def figure_disc(data: DiscData, figsize=(6.4, 4.5)):
     """Two discs seen from above (psi = 0 over the tail, advancing side on the right): the
     angle of attack in colour, stall and reverse flow hatched, the transonic region outlined;
-    the colour bar and the legend of the hatches below. Returns the figure."""
+    the colour bar and the legend of the hatches below. Returns the figure.
+
+    The discs are round (equal aspect), and the figure is narrower than the book's text column
+    (:data:`rotorlyap.figures.style.PAGE_WIDTH_PX`), so that it is shown at its own size and not
+    rescaled into ellipses."""
     from matplotlib.colors import BoundaryNorm
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
@@ -382,6 +411,7 @@ def figure_disc(data: DiscData, figsize=(8.8, 5.6)):
     hatches = {"stalled": "xxx", "reverse": "///"}
     for i, lab in enumerate(data.labels):
         a = ax[i]
+        a.set_aspect("equal")
         a.set_theta_zero_location("S")
         a.set_theta_direction(1)
         al = np.clip(data.alpha_deg[i], -90, 90)
@@ -497,6 +527,7 @@ class ModelChoiceData:
             "ch8_mu_first": f"{self.mu_values[1]:g}",
             "ch8_compr_dcoll": f"{np.nanmax(np.abs(dcoll)):.1f}",
             "ch8_model_mu_last": f"{self.mu_values[-1]:g}",
+            "ch8_coll0_incompr": f"{self.collective_deg[inc, 0, 0]:.2f}",
         }
 
 
@@ -832,15 +863,16 @@ class ForensicData:
             if not changed:
                 continue
             what = "; ".join(f"{n.replace('_', ' ')}: {_short(choice[idx[n]])}" for n in changed)
-            hv = "/".join("yes" if h else "no" for h in self.hover_stable[c])
+            hv = "/".join("yes" if h else "no" for h in self.hover_stable[c])  # passes at every hover azimuth
             rows.append([_short(choice[idx["condition"]]), what, _short(choice[idx["function"]]), hv, self.code(c)])
-        return markdown_table(["condition", "changed", "function", "hover stable (F/N/B)",
+        return markdown_table(["condition", "changed", "function", "hover passes (F/N/B)",
                                "first W' > 0 (F/N/B)"], rows)
 
     def summary(self) -> str:
-        """Counts: combinations, hover stable for every case, picture for any and for every case."""
+        """Counts: combinations, hover passing at every azimuth for every case, picture for any and
+        for every case."""
         c = len(self.rows)
-        return (f"{c} combinations; hover stable at every azimuth for all three C.G.: "
+        return (f"{c} combinations; hover passes at every azimuth for all three C.G.: "
                 f"{int(self.hover_stable.all(axis=1).sum())}; the picture for at least one C.G.: "
                 f"{int((self.n_matching > 0).sum())}, for all three: {int((self.n_matching == self.matches.shape[1]).sum())}")
 
@@ -861,6 +893,8 @@ class ForensicData:
             "ch8_forensic_hover": int(self.hover_stable.all(axis=1).sum()),
             "ch8_forensic_any": int((self.n_matching > 0).sum()),
             "ch8_forensic_all": int((self.n_matching == self.matches.shape[1]).sum()),
+            "ch8_forensic_base_thrust": (_short(self.rows[0][self.factors.index("thrust")])
+                                         if "thrust" in self.factors else ""),
         }
 
 
@@ -871,11 +905,15 @@ _SHORT = {
     "trimmed helicopter, periodic motion": "trimmed helicopter, periodic motion",
     "neutral at the aerodynamic centre": "a.c.",
     "neutral at the pitch axis": "neutral C.G. at the pitch axis",
-    -0.4: "tan d3 = -0.4", 0.4: "tan d3 = +0.4",
+    -0.4: "tan δ₃ = −0.4", 0.4: "tan δ₃ = +0.4",
 }
 
 
 def _short(value) -> str:
+    """A choice as the tables print it; a thrust choice ("4800 kg") as the weight it carries."""
+    if isinstance(value, str) and value.endswith(" kg"):
+        mass = float(value.split()[0])
+        return f"weight of {mass:.0f} kg ({mass * BladeParameters.table_i('forward').gravity / 1000:.1f} kN)"
     return _SHORT.get(value, str(value))
 
 

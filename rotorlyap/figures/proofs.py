@@ -163,8 +163,17 @@ class ProofTable:
         the residual term as a bound, :func:`_bound_text`), plus ``ch10_flight_tight`` (the azimuth,
         whole deg, where the flight case's nonlinear term comes closest to zero), ``ch10_ratio_lo``/``_hi`` and ``ch10_hover_res``
         (the largest residual term) over the hovers and the
-        flight case's ``ch10_flight_mu`` and ``ch10_flight_n``."""
-        f = {}
+        flight case's ``ch10_flight_mu`` and ``ch10_flight_n``; the settings the text quotes: the
+        numerical certificates' azimuths ``ch10_n_psi``, the Taylor models' order
+        ``ch10_taylor_order`` (:func:`rotorlyap.analysis.proof.prove_blade`'s default) and the
+        step of chapter 8's advance-ratio grid ``ch10_mu_step``."""
+        import inspect
+
+        from .flight import MU_FORENSIC
+
+        f = {"ch10_n_psi": int(self.rows[0].certificate.result.psi.size),
+             "ch10_taylor_order": int(inspect.signature(prove_blade).parameters["order"].default),
+             "ch10_mu_step": float(f"{MU_FORENSIC[1] - MU_FORENSIC[0]:.3g}")}
         for r in self.rows:
             key = r.key
             (na, nl), (pa, pl) = r.numerical, r.proved
@@ -220,7 +229,7 @@ def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
         return ProofRow(key, label, cert, balls)
 
     # the quadratic function by name: this chapter proves it (verify=True proves the function
-    # certify returns, by default the augmented energy where it certifies more: chapter 11)
+    # certify returns, by default the augmented energy where it certifies more: chapter 10)
     rows = [row(cg, f"{cg} C.G., hover", certify(BladeParameters.table_i(cg), 0.0, function="quadratic",
                                                  verify=True))
             for cg in hover_cases]
@@ -391,7 +400,9 @@ def figure_flight_proof(row: ProofRow, figsize=(6.6, 5.6)):
              label=f"numerical, $A$ = {cert.bound:.3g} ({res.psi.size} azimuths)")
     ax1.set_ylim(0.0, 1.25 * max(float(np.max(res.lambda0)), float(np.max(proof.lambda0))))
     ax1.set(ylabel=r"start radius $\lambda_0$ (scaled)")
-    ax1.legend(fontsize=8.5, loc="center right")
+    # below both curves, where the axis from zero leaves room (issue 42: "center right" covered the
+    # proved line from 240 to 360 deg)
+    ax1.legend(fontsize=8.5, loc="lower center", ncol=2)
     ax2.plot(psi_p, proof.terms["linear"], "-", color="0.5", lw=1, label="linear part (tube radius 0)")
     ax2.plot(psi_p, proof.terms["nonlinear"], "-", color="k", lw=1,
              label="polynomial part at the proved bound (estimate)")
@@ -437,15 +448,15 @@ class ExampleProofs:
         (na, nl), (pa, pl) = self.oscillator_numerical, self.oscillator_proved
         return "\n".join([
             f"oscillator of chapter 1: numerical A {na:.3g}, lambda0 {nl:.3g}; proved A {pa:.3g}, lambda0 {pl:.3g}",
-            f"counterexample of chapter 2: proved {self.counterexample_proved}",
+            f"counterexample of chapter 2: {'proved' if self.counterexample_proved else 'not proved'}",
             f"    {self.counterexample_message}"])
 
     def facts(self) -> dict:
-        """``ch10_osc_{numA,numl0,A,l0}``, ``ch10_cx_proved``."""
+        """``ch10_osc_{numA,numl0,A,l0}``, ``ch10_cx_proved`` ("proved" or "not proved")."""
         (na, nl), (pa, pl) = self.oscillator_numerical, self.oscillator_proved
         return {"ch10_osc_numA": float(f"{na:.3g}"), "ch10_osc_numl0": float(f"{nl:.3g}"),
                 "ch10_osc_A": float(f"{pa:.3g}"), "ch10_osc_l0": float(f"{pl:.3g}"),
-                "ch10_cx_proved": "yes" if self.counterexample_proved else "no"}
+                "ch10_cx_proved": "proved" if self.counterexample_proved else "not proved"}
 
 
 def example_proofs() -> ExampleProofs:
@@ -498,7 +509,7 @@ class ReverseFlowBlock:
         """One line: how many intervals are blocked, where, why."""
         lo, hi = self.span()
         return (f"mu = {self.mu:g}: {int(self.blocked.sum())} of {self.n_intervals} intervals blocked, "
-                f"psi {lo:.0f} to {hi:.0f} deg" + (f" ({self.reason})" if self.reason else ""))
+                f"psi {lo:.0f} to {hi:.0f} deg" + (f": {self.reason}" if self.reason else ""))
 
     def facts(self) -> dict:
         """``ch10_block_{mu,lo,hi}``: the advance ratio and the blocked azimuths (whole deg)."""

@@ -49,6 +49,7 @@ from ..methods.sampling import sphere_extremum, unit_sphere_points
 from ..methods.simulation import scaled_norm, simulate
 from ..methods.validation import last_revolution, long_run, validate
 from ..model.blade import Blade
+from ..model.inflow import GLAUERT_KX
 from ..model.modes import derived_quantities
 from ..model.parameters import BladeParameters
 from ..model.steady import as_steady_motion, disturbed_rhs, periodic_motion, tabulate_motion
@@ -94,6 +95,21 @@ SCAN_OPTIONS = {"n_psi": 24, "n_sphere": 256}
 
 #: Short names of the cases in the chapter's glue names (``ch7_ncert_q_neu``, ...).
 _CASE_TAGS = {"forward": "fw", "neutral": "neu", "backward": "bwd"}
+
+
+#: What :func:`rotorlyap.methods.validation.classify_motion`'s verdicts say about a motion of
+#: the (periodic) blade, in the chapter's words: a forced blade's "limit cycle" is the periodic
+#: motion it settles on.
+_VERDICT_WORDS = {"limit cycle outside A": "settles on a periodic motion outside A",
+                  "limit cycle within A": "settles on a periodic motion within A"}
+
+
+def _verdicts_in_words(verdicts: tuple) -> str:
+    """``"both starts: settles on ..."`` when the starts agree, else each start's verdict."""
+    words = [_VERDICT_WORDS.get(v, v) for v in verdicts]
+    if len(set(words)) == 1:
+        return f"{'both' if len(words) == 2 else 'every'} start{'s' if len(words) > 1 else ''}: {words[0]}"
+    return "; ".join(f"start {i + 1}: {w}" for i, w in enumerate(words))
 
 
 def _join(*parts) -> str:
@@ -249,8 +265,35 @@ class SteadyMotions:
             "ch7_th1s_25": round(float(h[2, 2]), 1),
             "ch7_n_mu": int(self.mu_values.size),
             "ch7_found_fn": int(self.found[[f, n]].sum()),
+            "ch7_found_fn_text": (f"all {int(self.found[[f, n]].sum())}: 2 C.G. positions × {self.mu_values.size} "
+                                  "advance ratios" if self.found[[f, n]].all() else
+                                  f"{int(self.found[[f, n]].sum())} of 2 C.G. positions × {self.mu_values.size} "
+                                  "advance ratios"),
+            "ch7_kx": GLAUERT_KX,
             "ch7_miss_bwd": _mu_list(self.missing()["backward"]),
+            **settings_facts(),
         }
+
+
+def settings_facts() -> dict:
+    """The method settings the chapter's text quotes, read from the functions' defaults: the
+    collocation points of the periodic motion (the quick test of existence, the final motion),
+    the azimuths of its table, the Magnus steps of the Floquet analysis and of the periodic
+    Lyapunov equation, and the directions and objective evaluations of the weight optimisation."""
+    import inspect
+
+    from ..analysis.functions import DEFAULT_N_STEPS
+
+    def default(fun, name):
+        return inspect.signature(fun).parameters[name].default
+
+    return {"ch7_colloc_test": default(periodic_motion, "n_points"),
+            "ch7_colloc_n": default(steady_motions, "n_points"),
+            "ch7_table_n": default(steady_motions, "n_table"),
+            "ch7_floquet_steps": default(floquet_data, "n_steps"),
+            "ch7_lyap_steps": DEFAULT_N_STEPS,
+            "ch7_opt_dirs": default(optimised_quadratic_function, "n_directions"),
+            "ch7_opt_evals": default(optimised_quadratic_function, "max_evaluations")}
 
 
 def _steady_motion(task: tuple):
@@ -590,13 +633,15 @@ class FloquetData:
             "ch7_fw_maxsig_hov": round(float(np.nanmax(self.sweep("forward", "hover").max_growth_rate)), 3),
             "ch7_lag_om0": round(float(abs(fp.frequency[0, lt])), 3),
             "ch7_lag_om25": round(float(abs(fp.frequency[-1, lt])), 2),
+            "ch7_lag_sig0": round(float(fp.growth_rate[0, lt]), 3),
             "ch7_lag_sig25": round(float(fp.growth_rate[-1, lt]), 3),
             "ch7_neu_sig_min": round(float(np.nanmin(sn.max_growth_rate)), 3),
             "ch7_neu_sig_max": round(float(np.nanmax(sn.max_growth_rate)), 3),
             "ch7_flip_mu": float(sb.mu[j1]),
             "ch7_flip_m": round(float(m1.real), 3),
             "ch7_n_unstable_bwd": int(j_un.size),
-            "ch7_n_unstable_bwd_text": count(int(j_un.size), "advance ratio"),
+            "ch7_n_unstable_bwd_text": ("this advance ratio of the grid only" if j_un.size == 1 else
+                                        count(int(j_un.size), "advance ratio") + " of the grid"),
             "ch7_bwd_sig_max": round(float(np.nanmax(sb.max_growth_rate)), 3),
             "ch7_bwd_sig0": round(float(sb.max_growth_rate[0]), 4),
             "ch7_bwd_sig_last": round(float(sb.max_growth_rate[-1]), 3),
@@ -879,7 +924,7 @@ CANDIDATES = (
 
 #: Outcome of one (azimuth, advance ratio) cell; the first four as in the Fig. 8 chapter.
 SCAN_CATEGORY_NAMES = (
-    "stable: (h) holds (strict: over the whole period)",
+    "passes (practical: indicator) / certified (strict: (h) over the whole period)",
     "paper's step 6 fails at this azimuth (practical)",
     "nothing certified (A = 0); W' <= 0 here on ||x|| = A",
     "nothing certified (A = 0); W' > 0 here on ||x|| = A",
@@ -961,7 +1006,7 @@ class ScanData:
                      else float("nan") for j in range(self.mu_values.size))
 
     def summary(self) -> str:
-        """Per candidate, case and advance ratio: ``stable/step-6-fails`` azimuth counts, or why
+        """Per candidate, case and advance ratio: ``passing or certified / step-6-fails`` azimuth counts, or why
         nothing is certified (``s3``, ``band``, ``noQ``, ``noXi``); the optimised weights of the
         forward C.G."""
         lines = [_join("mu:", self.mu_values)]
@@ -978,7 +1023,7 @@ class ScanData:
                         k = int(np.argmax(counts))
                         cells.append(why.get(k) or ("s3" if not self.A_step3[c, i, j] > 0 else "band"))
                 lines.append(_join(f"   {case:9s}", "  ".join(f"{v:>6s}" for v in cells)))
-        lines.append(f"(stable/step-6-fails azimuths of {self.psi.size}; s3 = step 3 failed, W' > 0 on "
+        lines.append(f"(passing or certified / step-6-fails azimuths of {self.psi.size}; s3 = step 3 failed, W' > 0 on "
                      "every sphere; band = (h) failed on the band for every bound; "
                      "noQ = no quadratic function; noXi = no periodic motion)")
         lines.append(_join("optimised weights (forward C.G.):", np.round(self.weights[self.cases.index("forward")], 3)))
@@ -1029,10 +1074,11 @@ class ScanData:
         return ~self.stable[cp, fwd].any(axis=1), dark, tail
 
     def certificate_summary(self) -> str:
-        """The certificate table's rows, where the energy's practical reading fails over the
-        disc, the certified cells of the neutral and backward C.G., and the advance ratios
-        where step 3 fails."""
-        lines = [" | ".join(r[1:]) for r in self.certificate_rows()]
+        """What the certificate table below it does not hold: where the energy's practical
+        reading fails over the disc, the certified cells of the neutral and backward C.G., and
+        the advance ratios of each outcome of the backward C.G. (an outcome at no advance ratio
+        is left out)."""
+        lines = []
         fail, dark, tail = self._energy_sides()
         label = self.labels[self.keys.index("energy-practical")]
         for j, mu in enumerate(self.mu_values):
@@ -1049,9 +1095,12 @@ class ScanData:
                          f"{lam_h.min():.2g}")
             lines.append(_join("   per mu (Q = I):", self.stable[cq, i].sum(axis=1)))
         ok, part, s3, band, none_neu = self._backward_mu()
-        lines.append(_join("backward, Q = I: all azimuths at mu =", ok, "; some at", part, "; step 3 failed at", s3,
-                           "; (h) failed on the band at", band))
-        lines.append(_join("neutral, optimised: nothing certified at mu =", none_neu))
+        parts = [f"{what} {_mu_list(mu)}" for what, mu in
+                 (("every azimuth certified at mu =", ok), ("some azimuths at mu =", part),
+                  ("step 3 failed at mu =", s3), ("(h) failed on the band at mu =", band)) if mu.size]
+        lines.append("backward, Q = I: " + "; ".join(parts))
+        lines.append("neutral, optimised: " + (f"nothing certified at mu = {_mu_list(none_neu)}" if none_neu.size
+                                               else "certified at every advance ratio"))
         return "\n".join(lines)
 
     def facts(self) -> dict:
@@ -1474,14 +1523,14 @@ class RuleChanges:
                                "A, paper's -> sound", "min lambda0, paper's -> sound"), self.rows())
 
     def summary(self) -> str:
-        """The table's rows, and how many cells changed of how many."""
+        """What the table below it does not hold: how many cells changed of how many, and in
+        which direction."""
         ran = self.n_paper >= 0
-        lines = [" | ".join(r) for r in self.rows()]
-        lines.append(f"changed: {int(self.changed().sum())} of {int(ran.sum())} cells; passed by the paper's "
-                     f"rule, not certified by the sound rule: {int(((self.n_paper > 0) & (self.n_sound == 0)).sum())}; "
-                     f"never the reverse: "
-                     f"{bool(not ((self.n_sound > 0) & (self.n_paper == 0)).any())}")
-        return "\n".join(lines)
+        gained = int(((self.n_sound > 0) & (self.n_paper == 0)).sum())
+        return (f"changed: {int(self.changed().sum())} of {int(ran.sum())} cells; passed by the paper's "
+                f"rule, not certified by the sound rule: {int(((self.n_paper > 0) & (self.n_sound == 0)).sum())}; "
+                + ("certified by the sound rule, not passed by the paper's: none" if not gained else
+                   f"certified by the sound rule, not passed by the paper's: {gained}"))
 
     def facts(self) -> dict:
         """Counts of the changed cells and of those the paper's rule alone certified."""
@@ -1757,13 +1806,26 @@ class ValidationData:
         return float(max(r for r, ok in bnd.items() if ok and all(bnd[s] for s in bnd if s <= r)))
 
     def summary(self) -> str:
-        """The confusion rows, the counts, the largest growth of a bounded motion (two decimals)."""
+        """What the confusion table below it does not hold: the counts, the starts placed on the
+        sphere ``||x|| = A`` itself and the starts inside it that reached ``A``, the largest
+        growth of a bounded motion (two decimals)."""
         n_motions, n_cert, viol = self.counts()
-        lines = [_join(f"{r[0]:24s} {r[1][:44]:44s} {r[2]:9s}", r[3:]) for r in self.rows()]
+        lines = [f"{v.label}: starts on ||x|| = A {self.on_sphere(v)}, started inside A and reached it "
+                 f"{self.inside_reached(v)}" for v in self.validations]
         lines.append(_join("motions:", n_motions, "; certified (strict):", n_cert, "; certified but beyond their bound:", viol))
         lines.append(_join("largest max-norm / start-norm of a bounded motion (forward C.G.):",
                            np.round(self.growth_ratios(), 2)))
         return "\n".join(lines)
+
+    @staticmethod
+    def on_sphere(v) -> int:
+        """Starts of ``v`` placed on the sphere ``||x|| = A`` (or outside): "reached A" at once."""
+        return int(np.sum(v.radius >= v.A * (1 - 1e-9)))
+
+    @staticmethod
+    def inside_reached(v) -> int:
+        """Starts of ``v`` inside ``||x|| < A`` that reached ``A``."""
+        return int(np.sum((v.radius < v.A * (1 - 1e-9)) & ~v.bounded))
 
     def facts(self) -> dict:
         """Counts, the observed bounded region of the forward hover and its ratio to the
@@ -1780,12 +1842,16 @@ class ValidationData:
             "ch7_obs_ratio_q": round(obs / self.lambda0_hover[0], 1),
             "ch7_obs_ratio_o": round(obs / self.lambda0_hover[1], 1),
             "ch7_growth_ratio": round(max(self.growth_ratios()), 2),
+            "ch7_on_sphere_hover": self.on_sphere(self.forward[0]),
+            "ch7_on_sphere_fwd": max(self.on_sphere(v) for v in self.forward),
+            "ch7_inside_reached_fwd": sum(self.inside_reached(v) for v in self.forward),
         }
         for case, v in zip(self.hover_cases, self.hover):
             tag = _CASE_TAGS[case]
             out[f"ch7_hov_cert_{tag}"] = int(self._strict(v).sum())
             out[f"ch7_hov_viol_{tag}"] = self._strict_violations(v)
             out[f"ch7_hov_paper_left_{tag}"] = int(v.confusion("paper")[0, 1])
+            out[f"ch7_inside_reached_{tag}"] = self.inside_reached(v)
         return out
 
 
@@ -1895,7 +1961,8 @@ class MotionData:
             k = points_per_revolution(h) + 1
             th = np.degrees(off[-k:, 2] + h.x[-k:, 0, 2])
             ze = np.degrees(off[-k:, 1] + h.x[-k:, 0, 1])
-            lines.append(f"{h.label}: {h.verdict}; peak norm in the last revolution {np.round(h.peaks[-1], 1)}; "
+            lines.append(f"{h.label}: {_verdicts_in_words(h.verdict)}; peak norm in the last revolution "
+                         f"{_join(*np.round(h.peaks[-1], 1))}; "
                          f"pitch {th.min():.1f} to {th.max():.1f} deg, lag {ze.min():.1f} to {ze.max():.1f} deg")
         lines.append(f"relative change of the last peak with ten times tighter tolerances: < {self.check_bound:.0e} "
                      "for every motion")

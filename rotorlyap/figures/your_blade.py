@@ -525,6 +525,10 @@ def plot_harmonics(data: HarmonicData):
 # --------------------------------------------------------------------------------------
 
 
+#: Units of the field table a reader cannot decode from the symbol alone.
+_UNIT_WORDS = {"R1": "× R1 (blade length)"}
+
+
 @dataclass(frozen=True)
 class BladeFile:
     """A blade read from a parameter file, with what the file left to the template.
@@ -562,7 +566,7 @@ class BladeFile:
                 shown = (value if isinstance(value, str) else
                          "(" + ", ".join(f"{v:.4g}" for v in value) + ")" if isinstance(value, tuple) else
                          f"{value:.5g}" if isinstance(value, float) else format_value(value))
-                rows.append((f"`{name}`", shown, unit, origin))
+                rows.append((f"`{name}`", shown, _UNIT_WORDS.get(unit, unit), origin))
         return markdown_table(("field", "value", "unit", "source"), rows)
 
     def summary(self) -> str:
@@ -640,9 +644,10 @@ class CertificateTable:
         return "\n".join(c.summary() for c in self.certificates)
 
     def facts(self, prefix: str) -> dict:
-        """``{prefix_mu<k>_<quantity>: text}``: the verdict, the flap and pitch start regions (deg, two
-        decimals), the flap bound (deg) and the flap-rate start region (deg/s, one decimal), k the
-        advance ratio times 100."""
+        """``{prefix_mu<k>_<quantity>: text}``: the verdict, the flap and pitch start balls (deg, two
+        decimals), the flap bound (deg) and the flap-rate start ball (deg/s, one decimal), and the
+        start set's reach along the flap angle and the flap rate alone (``_flap_set``,
+        ``_flap_rate_set``; "–" without a start set), k the advance ratio times 100."""
         out = {}
         for c in self.certificates:
             key = f"{prefix}_mu{round(100 * c.mu):02d}"
@@ -651,6 +656,9 @@ class CertificateTable:
             out[f"{key}_flap_start"] = f"{s['flap'][0]:.2f}"
             out[f"{key}_flap_rate_start"] = f"{s['flap'][1]:.1f}"
             out[f"{key}_pitch_start"] = f"{s['pitch'][0]:.2f}"
+            reach = c.start_set_per_hinge
+            out[f"{key}_flap_set"] = f"{reach['flap'][0]:.2f}" if reach else "–"
+            out[f"{key}_flap_rate_set"] = f"{reach['flap'][1]:.1f}" if reach else "–"
             out[f"{key}_flap_bound"] = f"{b['flap'][0]:.2f}"
             out[f"{key}_growth"] = f"{c.growth_rate:.3f}"
         return out
@@ -687,7 +695,7 @@ class SweepFigureData:
         Largest real part of the Floquet exponents, per rev (per radian of azimuth), shape
         (len(series), n).
     start_flap_deg : numpy.ndarray
-        Start region along the flap angle, deg (0 where nothing is certified), same shape.
+        Start region along the flap angle, deg (NaN where nothing is certified), same shape.
     certified : numpy.ndarray of bool
         Same shape.
     """
@@ -712,12 +720,13 @@ class SweepFigureData:
 
     def summary(self) -> str:
         """Per line: the x values certified, the growth rates (3 decimals) and the flap start
-        regions (deg, 2 decimals)."""
+        regions (deg, 2 decimals; "–" where nothing is certified)."""
         lines = [f"{self.x_name}: {[float(v) for v in self.x]}"]
         for k, s in enumerate(self.series):
             lines.append(f"{self.series_name} = {s:g}: certified at {[float(v) for v in self.x[self.certified[k]]]}")
             lines.append(f"  growth per rev: {np.round(self.growth[k], 3).tolist()}")
-            lines.append(f"  flap start (deg): {np.round(self.start_flap_deg[k], 2).tolist()}")
+            lines.append("  flap start (deg): [" + ", ".join("–" if not np.isfinite(v) else f"{v:.2f}"
+                                                         for v in self.start_flap_deg[k]) + "]")
         return "\n".join(lines)
 
 
@@ -747,14 +756,14 @@ def sweep_figure_data(result, x_name: str, series_name: str) -> SweepFigureData:
     x = np.array(sorted(set(xs)), dtype=float)
     series = tuple(sorted(set(ss)))
     shape = (len(series), x.size)
-    growth, start, ok = np.full(shape, np.nan), np.zeros(shape), np.zeros(shape, dtype=bool)
+    growth, start, ok = np.full(shape, np.nan), np.full(shape, np.nan), np.zeros(shape, dtype=bool)
     seen = np.zeros(shape, dtype=bool)
     for xv, sv, g, st, c in zip(xs, ss, result.column("growth_rate_per_rev"), result.column("start_flap_deg"),
                                 result.column("certified")):
         i, j = series.index(sv), int(np.searchsorted(x, xv))
         seen[i, j] = True
         growth[i, j] = np.nan if g is None else g
-        start[i, j] = 0.0 if (st is None or not c) else st
+        start[i, j] = np.nan if (st is None or not c) else st
         ok[i, j] = bool(c)
     if not seen.all():
         raise ValueError(f"the sweep is not a full grid over {x_name} and {series_name}")
@@ -782,12 +791,14 @@ def plot_sweep(data: SweepFigureData, *, x_label: str, series_label: str):
         ax2.plot(data.x, data.start_flap_deg[k], line, color=colour, lw=1)
         ok = data.certified[k]
         ax2.plot(data.x[ok], data.start_flap_deg[k][ok], marker, color=colour, ms=5, ls="none")
-        ax2.plot(data.x[~ok], data.start_flap_deg[k][~ok], "x", color=colour, ms=6, ls="none", clip_on=False)
+        # not certified: no start region to draw; a cross on the axis marks the point
+        ax2.plot(data.x[~ok], np.zeros(int((~ok).sum())), "x", color=colour, ms=7, mew=1.5, ls="none",
+                 clip_on=False, zorder=5)
     ax1.axhline(0.0, color="k", lw=0.8)
     ax1.set_ylabel("largest Floquet real part (per rev)")
     ax1.set_title("(a) linear stability", fontsize=10)
     ax2.set_ylabel("certified flap start region (deg)")
-    ax2.set_title("(b) the certificate (x: none)", fontsize=10)
+    ax2.set_title("(b) the certificate (x on the axis: not certified)", fontsize=10)
     for ax in (ax1, ax2):
         ax.set_xlabel(x_label)
         ax.grid(alpha=0.3)
@@ -797,7 +808,7 @@ def plot_sweep(data: SweepFigureData, *, x_label: str, series_label: str):
 
 
 def mode_summary(data) -> str:
-    """The modes of a fan plot or of a Floquet sweep as chapter 9 prints them, in words.
+    """The modes of a fan plot or of a Floquet sweep as chapter 11 prints them, in words.
 
     The book keeps one symbol for one quantity: zeta is the lag angle and sigma the solidity,
     so a mode's damping ratio and its growth rate are named, not given those symbols, as the

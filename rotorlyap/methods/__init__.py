@@ -2,9 +2,11 @@
 
 * :mod:`~rotorlyap.methods.lyapunov`: the paper's six-step algorithm of technical stability,
   :func:`~rotorlyap.methods.lyapunov.technical_stability`;
+* :mod:`~rotorlyap.methods.start_set`: the certified start set, beyond the start ball;
 * :mod:`~rotorlyap.methods.certificate_check`: a sound-rule certificate's claims (the level
   facts and condition (h)) checked again, by the engine's own final check;
 * :mod:`~rotorlyap.methods.sampling`: points on scaled spheres, batched sup/inf searches;
+* :mod:`~rotorlyap.methods.polish`: the searches' local polish of their best candidates;
 * :mod:`~rotorlyap.methods.simulation`: many motions integrated at once;
 * :mod:`~rotorlyap.methods.floquet`: Floquet multipliers of linear periodic systems;
 * :mod:`~rotorlyap.methods.periodic_lyapunov`: the periodic Lyapunov equation;
@@ -13,10 +15,14 @@
 * :mod:`~rotorlyap.methods.region`: the region of stable motion by batched simulation (ray
   extents and slices);
 * :mod:`~rotorlyap.methods.validation`: certificates measured against simulated motions;
-* :mod:`~rotorlyap.methods.intervals`: ball arithmetic (Arb) with derivatives, rigorous
-  eigenvalue bounds;
+* :mod:`~rotorlyap.methods.balls`: float balls, rigorous midpoint-radius arithmetic on numpy
+  arrays;
+* :mod:`~rotorlyap.methods.intervals`: ball arithmetic (float balls or Arb) with derivatives,
+  rigorous eigenvalue bounds;
 * :mod:`~rotorlyap.methods.taylor`: Taylor models (polynomials in the box variables with a
   rigorous remainder), enclosures that keep the cancellations ball arithmetic loses;
+* :mod:`~rotorlyap.methods.band`: ``W' < 0`` on the band shown by a branch and bound over
+  Taylor models;
 * :mod:`~rotorlyap.methods.proof`: proofs of technical stability with a quadratic function;
 * :mod:`~rotorlyap.methods.examples`: small periodic systems for the method chapters.
 

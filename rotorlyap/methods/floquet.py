@@ -1,12 +1,14 @@
-"""Floquet analysis of a linear periodic system ``x' = A(psi) x``.
+"""Floquet analysis of a linear periodic system ``x' = J(psi) x``.
 
-This module knows nothing about rotor blades: ``A`` is any real ``n x n`` matrix function of
-the independent variable ``psi`` with period ``T`` (for the blade ``psi`` is the azimuth
-``Omega t`` in rad, ``T = 2 pi`` and ``A`` is the Jacobian about the steady motion).
+This module knows nothing about rotor blades: the system matrix ``J`` (the argument ``A`` of
+the functions below) is any real ``n x n`` matrix function of the independent variable ``psi``
+with period ``T`` (for the blade ``psi`` is the azimuth ``Omega t`` in rad, ``T = 2 pi`` and
+``J`` is the Jacobian about the steady motion, as in the book's validation chapter; the book's
+``A`` is the bound of the direct method).
 
 Theory in brief
 ---------------
-The fundamental matrix ``Phi(psi)`` solves ``Phi' = A(psi) Phi``, ``Phi(0) = I``. Its value
+The fundamental matrix ``Phi(psi)`` solves ``Phi' = J(psi) Phi``, ``Phi(0) = I``. Its value
 after one period, the monodromy matrix ``M = Phi(T)``, maps the state at ``psi`` to the state
 at ``psi + T``. Its eigenvalues ``mu_i`` are the Floquet (characteristic) multipliers: the
 origin is asymptotically stable if and only if every ``|mu_i| < 1``. The characteristic
@@ -14,12 +16,12 @@ exponents ``eta_i = log(mu_i) / T`` play the part of eigenvalues of a constant s
 solutions are ``p(psi) exp(eta psi)`` with ``p`` T-periodic. Their real part is unique (a decay
 or growth rate per unit ``psi``) but their imaginary part, a frequency, is known only modulo
 ``2 pi / T``: any integer ``k`` gives the same multiplier with ``Im eta + k 2 pi / T``. This
-module returns the principal value (``-pi/T < Im eta <= pi/T``), except for a constant ``A``,
-whose exponents are the eigenvalues of ``A`` themselves; :func:`modal_properties` adds the
+module returns the principal value (``-pi/T < Im eta <= pi/T``), except for a constant ``J``,
+whose exponents are the eigenvalues of ``J`` themselves; :func:`modal_properties` adds the
 branch chosen by the caller (continuation from a constant system is the usual way to choose).
 
-Liouville's formula ``det M = exp(int_0^T trace A dpsi)`` holds exactly; every method here also
-integrates ``trace A`` so that :attr:`FloquetResult.liouville_error` measures the accuracy of
+Liouville's formula ``det M = exp(int_0^T trace J dpsi)`` holds exactly; every method here also
+integrates ``trace J`` so that :attr:`FloquetResult.liouville_error` measures the accuracy of
 the computed monodromy matrix.
 
 Methods (``method=``)
@@ -27,31 +29,31 @@ Methods (``method=``)
 ``"dop853"`` (default)
     Adaptive explicit Runge-Kutta of order 8 (:func:`scipy.integrate.solve_ivp`) on the
     flattened matrix ODE, ``rtol = 1e-11``, ``atol = 1e-13`` by default: relative accuracy of
-    the monodromy matrix about ``1e-10`` for well-scaled problems, with error control. ``A`` is
+    the monodromy matrix about ``1e-10`` for well-scaled problems, with error control. ``J`` is
     called at one ``psi`` per stage, or, with ``n_intervals = m > 1``, at ``m`` azimuths per
     stage: the period is split into ``m`` pieces integrated simultaneously from the identity
-    and their transition matrices are multiplied (helpful when ``A`` is vectorised and
+    and their transition matrices are multiplied (helpful when ``J`` is vectorised and
     expensive, and more robust when the system is strongly unstable).
 ``"magnus6"``
     Sixth-order Magnus integrator with three Gauss-Legendre nodes per step (Blanes, Casas, Oteo
-    & Ros, Phys. Rep. 470, 2009, sec. 5): global error ``O(h**6)``, ``A`` sampled once on the
-    ``3 n_steps`` nodes (one call when ``A`` is vectorised), one matrix exponential per step.
+    & Ros, Phys. Rep. 470, 2009, sec. 5): global error ``O(h**6)``, ``J`` sampled once on the
+    ``3 n_steps`` nodes (one call when ``J`` is vectorised), one matrix exponential per step.
     The step matrices are exponentials, so ``det`` follows Liouville's formula up to the
-    quadrature error of ``trace A`` and a Hamiltonian ``A`` gives a symplectic ``M``.
+    quadrature error of ``trace J`` and a Hamiltonian ``J`` gives a symplectic ``M``.
 ``"magnus4"``
     Fourth-order Magnus (two Gauss-Legendre nodes per step), same structure.
 ``"rk4"``
-    Classical fourth-order Runge-Kutta on a uniform grid, ``A`` sampled once on the
+    Classical fourth-order Runge-Kutta on a uniform grid, ``J`` sampled once on the
     ``2 n_steps + 1`` points ``j T / (2 n_steps)``; global error ``O(h**4)``.
 
-Non-smooth ``A``
+Non-smooth ``J``
 ----------------
-The error control of DOP853 assumes a smooth right-hand side. An ``A(psi)`` with kinks (for
+The error control of DOP853 assumes a smooth right-hand side. A ``J(psi)`` with kinks (for
 example from piecewise-linear airfoil data crossed by the local angle of attack) or with
 round-off noise (a finite-difference Jacobian, about 1e-11 relative) forces tiny steps at
 ``rtol = 1e-11``: millions of evaluations, minutes of computing, for an accuracy that the kinks
 limit anyway (the fixed-step methods lose their order at a kink too, converging like
-``h**2``). ``max_evaluations`` stops such runs with advice; for such ``A`` use
+``h**2``). ``max_evaluations`` stops such runs with advice; for such ``J`` use
 ``method="magnus6"`` with ``vectorized=True`` and a fixed ``n_steps`` (1024-4096 steps per
 period cost well under a second for a 6 x 6 system) and judge the accuracy by comparing two
 step counts.
@@ -59,7 +61,7 @@ step counts.
 For the fixed-step methods ``n_steps=None`` doubles the number of steps from 16 until two
 successive monodromy matrices agree to ``rtol * max|M| + atol`` (at most 2**16 steps, with a
 warning if not reached); :attr:`FloquetResult.error_estimate` is then the Richardson estimate
-``max|M_2h - M_h| / (2**p - 1)``. A constant ``A`` (an array) is handled exactly by
+``max|M_2h - M_h| / (2**p - 1)``. A constant ``J`` (an array) is handled exactly by
 :func:`scipy.linalg.expm` whatever the method.
 """
 
@@ -413,17 +415,17 @@ def monodromy(
     atol: float = 1e-13,
     max_evaluations: int | None = 1_000_000,
 ) -> np.ndarray:
-    """Monodromy matrix ``Phi(T)`` of ``x' = A(psi) x``: ``Phi' = A Phi`` from ``Phi(0) = I``.
+    """Monodromy matrix ``Phi(T)`` of ``x' = J(psi) x``: ``Phi' = J Phi`` from ``Phi(0) = I``.
 
     Parameters
     ----------
     A : callable or array_like
-        ``A(psi)`` returning a real ``(n, n)`` array for a float ``psi`` (units of ``psi``: those
+        The system matrix ``J``: ``A(psi)`` returning a real ``(n, n)`` array for a float ``psi`` (units of ``psi``: those
         of ``period``, e.g. rad of azimuth), or, with ``vectorized=True``, a ``(k, n, n)``
         array for ``psi`` of shape ``(k,)``. A constant real ``(n, n)`` array is also accepted
         (then ``expm(A T)`` is returned and ``method`` is not used).
     period : float
-        The period ``T`` of ``A`` (> 0), same units as ``psi``.
+        The period ``T`` of ``J`` (> 0), same units as ``psi``.
     method : {"dop853", "magnus6", "magnus4", "rk4"}
         Integrator, see the module docstring. Default ``"dop853"`` (adaptive, error
         controlled; about 1e-10 relative accuracy with the default tolerances).
@@ -709,12 +711,13 @@ def floquet_multipliers(
     tol: float = 1e-9,
     max_evaluations: int | None = 1_000_000,
 ) -> FloquetResult:
-    """Floquet multipliers and characteristic exponents of ``x' = A(psi) x``.
+    """Floquet multipliers and characteristic exponents of ``x' = J(psi) x``.
 
     Parameters
     ----------
     A : callable or array_like
-        ``A(psi)``, period ``period``; see :func:`monodromy` (also for a constant array).
+        The system matrix ``J``: ``A(psi)``, period ``period``; see :func:`monodromy` (also for a
+        constant array).
     period : float
         The period ``T`` (> 0), units of ``psi``.
     method, n_steps, n_intervals, vectorized, rtol, atol, max_evaluations
