@@ -244,7 +244,7 @@ def test_read_blade_names_the_file_not_its_folder_and_lists_what_it_left_to_the_
     assert b.warning.startswith("sa330_puma.toml leaves out 3 of the 22 blade fields")
     table = b.markdown()
     assert "| `pitch_flap_coupling` | -0.4 | - | template: Table I (tan delta3) |" in table
-    assert "| `radius` | 7.49 | m | the file: PumaBladeData |" in table
+    assert "| `radius` | 7.49 | m | the file: {cite:p}`PumaBladeData` |" in table
     assert "| `hub_elements` | (0.05342, 0, 0, 0.02643, 0) | × R1 (blade length) |" in table
     assert "left to the template: pitch_flap_coupling, pitch_stiffness, lag_damping" in b.summary()
 

@@ -233,7 +233,7 @@ def _designed_json(fun: DesignedFunction) -> dict:
 
 
 def save_certificate(cert, path: str | Path) -> Path:
-    """Write a certificate as a JSON file that :func:`verify` checks (module docstring).
+    """Write a certificate as a JSON file that :func:`verify` checks.
 
     Parameters
     ----------
@@ -578,7 +578,7 @@ def _read_designed(r: _Fields, fun: dict, family: str, blade: Blade, steady: Ste
 
 
 def read_certificate(path: str | Path) -> StoredCertificate:
-    """Read a certificate file and rebuild what it stores (module docstring); nothing is checked
+    """Read a certificate file and rebuild what it stores; nothing is checked
     beyond the file's form (:func:`verify` checks the claims).
 
     Parameters
@@ -731,7 +731,7 @@ def _rounded(value: float) -> str:
 
 
 def _steady_check(stored: StoredCertificate) -> Check:
-    """The steady-motion table against the blade's equations (module docstring)."""
+    """The steady-motion table against the blade's equations."""
     a, blade, steady = stored.scales, stored.blade, stored.steady
     if steady.is_constant:
         psi = stored.period * np.arange(CONSTANT_AZIMUTHS) / CONSTANT_AZIMUTHS
@@ -771,7 +771,7 @@ def _proof_check(stored: StoredCertificate) -> Check:
 
 
 def verify(path: str | Path, *, prove: bool = False) -> Verification:
-    """Check a certificate file from nothing but the file (module docstring).
+    """Check a certificate file from nothing but the file.
 
     Parameters
     ----------

@@ -26,6 +26,7 @@ Angles are printed in degrees, rates and frequencies per revolution (units of ``
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import ClassVar
@@ -67,6 +68,18 @@ _COMPONENT_LEGEND = (("mean", "-"), ("1st cosine", "--"), ("1st sine", ":"))
 # Step 1: the parameters
 # --------------------------------------------------------------------------------------
 
+
+
+_CITATION_KEY = re.compile(r"[A-Za-z][\w:-]*")
+
+
+def _cited(source: str) -> str:
+    """A parameter file's source in the book's table: ``KEY`` or ``KEY; note`` (a citation key of the
+    book's bibliography, then what was assumed) as a MyST citation, any other text as it is."""
+    key, _, note = (part.strip() for part in source.partition(";"))
+    if not _CITATION_KEY.fullmatch(key):
+        return source
+    return f"{{cite:p}}`{key}`" + (f"; {note}" if note else "")
 
 @dataclass(frozen=True)
 class ParameterChanges:
@@ -555,14 +568,15 @@ class BladeFile:
     sources: dict = dataclasses.field(default_factory=dict)
 
     def markdown(self) -> str:
-        """The blade fields as a Markdown table: field, value, unit, and 'given' or the template's source."""
+        """The blade fields as a Markdown table: field, value, unit, and 'given' or the template's source
+        (a source that is a citation key, alone or before ``;`` and a note, shown as a citation)."""
         from ..model.parameters import BLADE_FIELDS
         from .export import format_value, markdown_table
         rows = []
         for name, value, unit, source in parameter_table(self.params):  # value: as given, 4 digits
             if name in BLADE_FIELDS:
                 origin = (f"template: {source.split(': ', 1)[-1]}" if name in self.left_out else
-                          f"the file: {self.sources[name]}" if name in self.sources else "the file")
+                          f"the file: {_cited(self.sources[name])}" if name in self.sources else "the file")
                 shown = (value if isinstance(value, str) else
                          "(" + ", ".join(f"{v:.4g}" for v in value) + ")" if isinstance(value, tuple) else
                          f"{value:.5g}" if isinstance(value, float) else format_value(value))

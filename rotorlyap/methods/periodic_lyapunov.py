@@ -1,5 +1,8 @@
 """The periodic Lyapunov equation: a quadratic Liapunov function for ``x' = A(psi) x``.
 
+Here ``A(psi)`` is the system matrix (the parameter ``A`` of :func:`periodic_lyapunov`; the
+Jacobian ``J(psi)`` of chapter 7), not the bound ``A`` of the theorem.
+
 For an asymptotically stable linear periodic system (every Floquet multiplier inside the unit
 circle) and a symmetric positive-definite ``Q``, the equation
 
