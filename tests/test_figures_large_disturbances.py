@@ -42,7 +42,7 @@ def test_process_map_keeps_the_order_of_the_items_whatever_finishes_first():
 @pytest.mark.slow
 def test_a_case_holds_the_certificate_certify_gives_and_its_yardstick(data):
     r = data["forward"]
-    direct = certify(r.case.params(), 0.0, condition="none", function="quadratic")
+    direct = certify(r.case.params(), 0.0, condition="none", function="quadratic", scales=r.case.scales)
     (cand,) = r.candidates
     assert cand.function == "quadratic" and cand.certified
     assert cand.start_region == pytest.approx(direct.start_region, rel=1e-9)  # same numbers in a worker

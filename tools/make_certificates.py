@@ -15,8 +15,10 @@ verify each file from nothing (``rotorlyap.verify``) in every run, on any machin
 
 For each Table I hover, the default ``certify(BladeParameters.table_i(cg), 0.0,
 condition="none", scales=...)`` (the paper's controls; the augmented energy, designed on the
-shell of the band; the norm scales of chapter 11's case, the default ones but at the backward
-C.G., ``rotorlyap.figures.large_disturbances.BACKWARD_SCALES``) is saved as
+shell of the band; the norm scales of chapter 11's case,
+``rotorlyap.figures.large_disturbances.SCALE_FACTORS``: the pitch angle's and pitch rate's
+scales larger than the default, so that the start set reaches further along the hinge where it
+reaches least) is saved as
 ``book/certificates/hover_<cg>.json``. Its design takes half a minute to a
 minute, and the backward C.G.'s start radius depends on the last bits of the floating-point
 environment (its design program works at the edge of feasibility); made once here, each file is
