@@ -136,7 +136,8 @@ def test_a_case_with_a_certificate_file_verifies_it_and_keeps_it_beside_the_quad
     summary), lists it beside the quadratic function it computes, and takes it as the chapter's
     certificate where its start region is larger; a file of another case is refused."""
     params = chapter.CASES[0].params()
-    certify(params, 0.0, condition="none", function="quadratic", A=0.5).save(tmp_path / "small.json")
+    certify(params, 0.0, condition="none", function="quadratic", A=0.5,
+            scales=chapter.CASES[0].scales).save(tmp_path / "small.json")  # in the case's norm
     case = dataclasses.replace(chapter.CASES[0], function="quadratic", file="small.json")
     kind, _, folder = "certificate", case, tmp_path
     out = chapter._compute((kind, case, folder))
