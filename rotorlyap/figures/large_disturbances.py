@@ -90,8 +90,8 @@ class Case:
 #: along the hinge where it reaches least, against the simulated region (chapter 11's yardstick,
 #: measured in the default norm whatever the certificate's). The start set is a sublevel set of a
 #: function of the scaled state, so its reach along each hinge follows the scales; but a larger
-#: scale is a larger share of the design's sampled sphere, and the design program then meets a
-#: smaller start radius, or none. Measured 2026-12-05 with the default certify (the augmented
+#: scale also stretches along its hinge the band on which the design asks W' < 0, and beyond a
+#: point the design program meets a smaller start radius, or none. Measured 2026-12-05 with the default certify (the augmented
 #: energy) against the yardstick of the default norm; the start set's reach in % of the simulated
 #: region along beta, zeta, theta, beta', zeta', theta' (the least marked *; against the yardstick
 #: as chapter 11 prints it, to two digits, so a ratio may differ from the chapter's by its last
