@@ -95,7 +95,7 @@ class Case:
 #: energy) against the yardstick of the default norm; the start set's reach in % of the simulated
 #: region along beta, zeta, theta, beta', zeta', theta' (the least marked *; against the yardstick
 #: as chapter 11 prints it, to two digits, so a ratio may differ from the chapter's by its last
-#: digit: the forward C.G.'s chosen norm reaches 19 % there):
+#: digit or so: the forward C.G.'s chosen norm reaches 19 % there, mu = 0.2's 12 %):
 #:
 #: * forward C.G. hover (simulated 37, 34, >= 40 deg; 1300, 270, >= 5700 deg/s): the default
 #:   norm 20, 37, 15*, 16, 31, 17 (lambda0 3.1); pitch and pitch rate x1.3: 24, 48, 25, 18*, 39,
