@@ -42,7 +42,7 @@ def test_process_map_keeps_the_order_of_the_items_whatever_finishes_first():
 @pytest.mark.slow
 def test_a_case_holds_the_certificate_certify_gives_and_its_yardstick(data):
     r = data["forward"]
-    direct = certify(r.case.params(), 0.0, condition="none", function="quadratic")
+    direct = certify(r.case.params(), 0.0, condition="none", function="quadratic", scales=r.case.scales)
     (cand,) = r.candidates
     assert cand.function == "quadratic" and cand.certified
     assert cand.start_region == pytest.approx(direct.start_region, rel=1e-9)  # same numbers in a worker
@@ -136,7 +136,8 @@ def test_a_case_with_a_certificate_file_verifies_it_and_keeps_it_beside_the_quad
     summary), lists it beside the quadratic function it computes, and takes it as the chapter's
     certificate where its start region is larger; a file of another case is refused."""
     params = chapter.CASES[0].params()
-    certify(params, 0.0, condition="none", function="quadratic", A=0.5).save(tmp_path / "small.json")
+    certify(params, 0.0, condition="none", function="quadratic", A=0.5,
+            scales=chapter.CASES[0].scales).save(tmp_path / "small.json")  # in the case's norm
     case = dataclasses.replace(chapter.CASES[0], function="quadratic", file="small.json")
     kind, _, folder = "certificate", case, tmp_path
     out = chapter._compute((kind, case, folder))

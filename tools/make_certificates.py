@@ -7,16 +7,19 @@ default: every file the book ships, the three hovers and mu = 0.1, 0.2 and 0.25)
 For each advance ratio, the default ``rotorlyap.certify`` of the trimmed helicopter (the Table I
 blade in the forward-flight model, forward C.G.: ``BladeParameters.flight_case("forward")``) is
 made about the periodic motion refined by shooting (``refine=True``: a table that solves the
-equations to round-off, as ``rotorlyap.verify`` checks) and saved as
-``book/certificates/forward_mu<100 mu>.json``. Its design (the augmented energy
+equations to round-off, as ``rotorlyap.verify`` checks), in the norm scales of chapter 11's
+case (``rotorlyap.figures.large_disturbances.CASES``; the default ones where it gives none), and
+saved as ``book/certificates/forward_mu<100 mu>.json``. Its design (the augmented energy
 in forward flight) takes minutes and its start radius depends on the last bits of the
 floating-point environment, so it is made once, here, and committed; chapter 11 and the tests
 verify each file from nothing (``rotorlyap.verify``) in every run, on any machine.
 
 For each Table I hover, the default ``certify(BladeParameters.table_i(cg), 0.0,
 condition="none", scales=...)`` (the paper's controls; the augmented energy, designed on the
-shell of the band; the norm scales of chapter 11's case, the default ones but at the backward
-C.G., ``rotorlyap.figures.large_disturbances.BACKWARD_SCALES``) is saved as
+shell of the band; the norm scales of chapter 11's case,
+``rotorlyap.figures.large_disturbances.SCALE_FACTORS``: the pitch angle's and pitch rate's
+scales larger than the default, so that the start set reaches further along the hinge where it
+reaches least) is saved as
 ``book/certificates/hover_<cg>.json``. Its design takes half a minute to a
 minute, and the backward C.G.'s start radius depends on the last bits of the floating-point
 environment (its design program works at the edge of feasibility); made once here, each file is
@@ -53,12 +56,15 @@ def path_for(case: float | str) -> Path:
     return FOLDER / f"forward_mu{round(100 * case):03d}.json"
 
 
-def hover_scales(cg: str):
-    """The norm scales of a Table I hover's certificate: chapter 11's for the case
-    (:data:`rotorlyap.figures.large_disturbances.CASES`; None: the default scales)."""
+def case_scales(case: float | str):
+    """The norm scales of a case's certificate (a Table I hover's C.G. or an advance ratio of the
+    trimmed helicopter): chapter 11's for the case (:data:`rotorlyap.figures.large_disturbances.CASES`;
+    None: the default scales)."""
     from rotorlyap.figures.large_disturbances import CASES
 
-    return next(c.scales for c in CASES if c.mu == 0.0 and c.blade == ("table_i", cg))
+    if isinstance(case, str):
+        return next(c.scales for c in CASES if c.mu == 0.0 and c.blade == ("table_i", case))
+    return next((c.scales for c in CASES if c.mu == case and c.blade == ("flight_case", "forward")), None)
 
 
 def _case(word: str) -> float | str:
@@ -79,9 +85,9 @@ def main(argv: list[str]) -> int:
         name = f"{case} C.G. hover" if isinstance(case, str) else f"mu = {case:g}"
         with listening(Lines(sys.stderr, prefix=f"  {name}: ")):
             if isinstance(case, str):
-                cert = certify(BladeParameters.table_i(case), 0.0, condition="none", scales=hover_scales(case))
+                cert = certify(BladeParameters.table_i(case), 0.0, condition="none", scales=case_scales(case))
             else:
-                cert = certify(BladeParameters.flight_case("forward"), case, refine=True)
+                cert = certify(BladeParameters.flight_case("forward"), case, refine=True, scales=case_scales(case))
         cert.save(path_for(case))
         print(f"{name}: {cert.function}, certified {cert.certified}, A = {cert.bound:.4g}, "
               f"lambda0 = {cert.start_region:.4g}, {time.perf_counter() - start:.0f} s -> {path_for(case).name}")
