@@ -25,9 +25,10 @@ import numpy as np
 from ..analysis.certificate_file import read_certificate, verify
 from ..analysis.certify import Candidate, certify, function_start_set
 from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
-from ..analysis.region import SLICES, StableRegion, stable_region
+from ..analysis.region import DEFAULT_S_MAX, SLICES, StableRegion, stable_region
 from ..analysis.sweep import process_map
 from ..conventions import DEFAULT_SCALES, HINGES, STATE_NAMES
+from ..methods.region import DEFAULT_BOUND, DEFAULT_DECAY, DEFAULT_STEPS_PER_PERIOD, MAX_PERIODS, MIN_PERIODS
 from ..methods.sampling import unit_sphere_points
 from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
@@ -532,10 +533,13 @@ class LargeDisturbances:
                 c = r.candidate(fn)
                 if c is not None and c.start_set:
                     rows.append((f"{name}: start set", r.per_component(np.asarray(c.start_set)), np.zeros(6, bool)))
-                if c is not None:
+                if c is not None and c.certified:
                     rows.append((f"{name}: start ball", r.per_component(c.start_region), np.zeros(6, bool)))
+                elif c is not None:  # nothing certified: said in words, not a start region of 0
+                    rows.append((f"{name}: not certified", np.full(6, np.nan), np.zeros(6, bool)))
             for i, (what, vals, cap) in enumerate(rows):
-                cells = [("&ge; " if k else "") + f"{_sig(v):g}" for v, k in zip(vals, cap)]
+                cells = [("&ge; " if k else "") + (f"{_sig(v):g}" if math.isfinite(v) else "–")
+                         for v, k in zip(vals, cap)]
                 lines.append(f"| {r.case.label if i == 0 else ''} | {what} | " + " | ".join(cells) + " |")
         return "\n".join(lines)
 
@@ -550,10 +554,10 @@ class LargeDisturbances:
                 out += ["    " + line for line in r.verification.splitlines()]
             for c in r.candidates:
                 if not c.certified:
-                    out.append(f"  {c.function}: not certified")
+                    out.append(f"  {_NAMES[c.function]}: not certified")
                     continue
                 reach, whole = r.reach(c.function), r.set_reach(c.function)
-                out.append(f"  {c.function}: certified={c.certified}, A = {_sig(c.bound):g}, "
+                out.append(f"  {_NAMES[c.function]}: certified, A = {_sig(c.bound):g}, "
                            f"lambda0 = {_sig(c.start_region):g}, of the simulated region: ball "
                            f"{_pct(np.nanmin(reach))}-{_pct(np.nanmax(reach))} %"
                            + (f", start set {_pct(np.nanmin(whole))}-{_pct(np.nanmax(whole))} % "
@@ -564,7 +568,9 @@ class LargeDisturbances:
                     out.append(f"    designed for lambda = {_sig(best):g}; the program did not meet {_sig(fail):g}")
             if r.anatomy is not None:
                 an = r.anatomy
-                out.append(f"    energy's part of W on the start sphere: {_sig(100 * an.energy_share):g} %")
+                share = _sig(100 * an.energy_share)
+                out.append(f"    the energy term's share of W on the start sphere: {share:g} % (the quadratic "
+                           f"part's {_sig(100 - share):g} %; either may be negative)")
                 for k, m, e, fr, d in zip(an.radii, an.max_dw, an.energy_dw, an.positive_fraction, an.direction):
                     top = np.argsort(-np.abs(d))[:2]
                     out.append(f"    at {k:g} A: max W' {_sig(m):g} (energy's part {_sig(e):g}), W' >= 0 on "
@@ -576,12 +582,12 @@ class LargeDisturbances:
                            f"Jacobian enclosure on |y_i| <= {pl.width.bound:g}: radius up to "
                            f"{_sig(pl.width.radius.max()):g} ({_sig(pl.width_without_air.radius.max()):g} without air "
                            f"loads), sampled variation {_sig(pl.width.variation.max()):g}, contains the sample: "
-                           f"{pl.width.contained}; on |y_i| <= {pl.widths[-1].bound:g}: radius up to "
+                           f"{'yes' if pl.width.contained else 'no'}; on |y_i| <= {pl.widths[-1].bound:g}: radius up to "
                            f"{_sig(pl.widths[-1].radius.max()):g}, sampled variation "
                            f"{_sig(pl.widths[-1].variation.max()):g}; in Taylor models of order {TAYLOR_ORDER} "
                            f"on |y_i| <= {pl.width_taylor.bound:g}: radius up to "
                            f"{_sig(pl.width_taylor.radius.max()):g}, {pl.width_taylor.ratio:.2f} times the "
-                           f"sampled variation, contains the sample: {pl.width_taylor.contained}")
+                           f"sampled variation, contains the sample: {'yes' if pl.width_taylor.contained else 'no'}")
             sim = r.simulated
             cap = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
             out.append("  simulated (deg, deg/s): " + ", ".join(
@@ -592,6 +598,7 @@ class LargeDisturbances:
         """The numbers the chapter's text quotes, rounded (2 significant digits)."""
         f = {}
         gains = []
+        verdicts = {}
         for r in self.results:
             k = r.case.key
             q = r.candidate("quadratic")
@@ -602,15 +609,21 @@ class LargeDisturbances:
                 f[f"ch11_{k}_scales"] = ", ".join(f"the {_HINGE_WORDS[i]}'s {factor[i]:g} times"
                                                   for i in range(6) if factor[i] != 1.0)
             if r.verification:
-                f[f"ch11_{k}_verified"] = "verified" if r.verification.startswith("VERIFIED") else "refused"
+                verdicts[r.case.label] = r.verification.startswith("VERIFIED")
             f[f"ch11_{k}_sim_flap"] = _sig(r.simulated[0])
             f[f"ch11_{k}_q_flap"] = _sig(r.per_component(q.start_region)[0])
+            if q.certified and q.start_set:
+                f[f"ch11_{k}_q_set_flap"] = _sig(r.per_component(np.asarray(q.start_set))[0])
             f[f"ch11_{k}_q_reach"] = _sig(100 * np.nanmin(r.reach("quadratic")))
             whole = r.set_reach(r.chosen)
             if np.any(np.isfinite(whole)):
                 f[f"ch11_{k}_set_reach"] = _sig(100 * np.nanmin(whole))
                 f[f"ch11_{k}_ball_reach"] = _sig(100 * np.nanmin(r.reach(r.chosen)))
                 f[f"ch11_{k}_set_weakest"] = _HINGE_WORDS[int(np.nanargmin(whole))]
+                # the yardstick a lower bound along the weakest hinge: the share is an upper estimate
+                capped = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
+                f[f"ch11_{k}_set_reach_words"] = ("at most " if capped[int(np.nanargmin(whole))] else "") + \
+                    f"{f[f'ch11_{k}_set_reach']:g}"
                 f[f"ch11_{k}_set_flap"] = _sig(r.per_component(np.asarray(r.candidate(r.chosen).start_set))[0])
             if e is not None and e.certified:
                 f[f"ch11_{k}_e_flap"] = _sig(r.per_component(e.start_region)[0])
@@ -624,6 +637,12 @@ class LargeDisturbances:
                     f[f"ch11_{k}_energy_share"] = _pct(an.energy_share)  # "0", never "0.0"
                     first = next((kk for kk, m in zip(an.radii, an.max_dw) if m >= 0), math.nan)
                     f[f"ch11_{k}_positive_at"] = first
+                    below = [kk for kk, m in zip(an.radii, an.max_dw) if m < 0 and not kk > first]
+                    f[f"ch11_{k}_sign_words"] = (
+                        f"stays negative on every sampled sphere up to {max(below):g} times the bound and is "
+                        f"positive somewhere on the sphere of {first:g} times it" if math.isfinite(first) and below
+                        else f"stays negative on every sampled sphere up to {max(an.radii):g} times the bound"
+                        if not math.isfinite(first) else f"is positive already on the sphere of {first:g} times the bound")
                     if math.isfinite(first):
                         d = np.asarray(an.direction[an.radii.index(first)])
                         top = np.argsort(-np.abs(d))[:2]
@@ -656,6 +675,17 @@ class LargeDisturbances:
             f[f"ch11_{k}_growth"] = _sig(r.growth_rate)
         if gains:
             f["ch11_gain_lo"], f["ch11_gain_hi"] = _sig(min(gains)), _sig(max(gains))
+        # the yardstick's settings the text quotes (rotorlyap.methods.region's defaults)
+        f["ch11_sim_bound"] = f"{DEFAULT_BOUND:g}"
+        f["ch11_sim_bound_flap"] = f"{np.degrees(DEFAULT_BOUND * DEFAULT_SCALES[0]):.0f}"
+        f["ch11_sim_decay"] = f"{DEFAULT_DECAY:g}"
+        f["ch11_sim_periods"] = f"{MIN_PERIODS} to {MAX_PERIODS}"
+        f["ch11_sim_steps"] = str(DEFAULT_STEPS_PER_PERIOD)
+        f["ch11_sim_s_max"] = f"{DEFAULT_S_MAX:g}"
+        refused = [label for label, ok in verdicts.items() if not ok]
+        f["ch11_files_verified"] = (f"all {len(verdicts)} verified" if not refused else
+                                    f"{len(verdicts) - len(refused)} of {len(verdicts)} verified, refused: "
+                                    + ", ".join(refused))
         return f
 
     def export(self) -> dict:
