@@ -187,7 +187,7 @@ CASES: tuple[Case, ...] = (
     # radii it tries), so a last-bit difference in the floating-point environment moves the start
     # radius it reaches (README, "What a committed output may print"); in forward flight the
     # design takes minutes and its start radius changes with the environment too (at mu = 0.1 it
-    # met 2.7 in the ordinary environment and 1.6 in the perturbed one of .ci/run)
+    # met 2.7 in the ordinary environment and 1.6 in the perturbed one of .ci/run, in the default norm)
     Case("forward", "forward C.G., hover", ("table_i", "forward"), 0.0, "none", "quadratic", "hover_forward.json",
          FORWARD_SCALES),
     Case("neutral", "neutral C.G., hover", ("table_i", "neutral"), 0.0, "none", "quadratic", "hover_neutral.json",
