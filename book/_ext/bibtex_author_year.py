@@ -4,7 +4,7 @@ The text cites author-year (``bibtex_reference_style: author_year``, "[Narkiewic
 Lucjanek, 1989]"), but pybtex's ``plain`` style numbers the list ([1], [2], ...), so a reader
 cannot find a citation in the list, and "reference [4]" of the paper's own list read as the
 book's [4]. This extension registers the pybtex style ``plain_author_year``: the ``plain``
-style (entries sorted by author, year and title) with the label "Author, year", "A and B,
+style, entries sorted by their labels, with the label "Author, year", "A and B,
 year" or "A et al., year", as the citations print it; without an author the title stands in,
 without a year "n.d.". Two entries with the same label get "a", "b" after the year.
 """
@@ -19,6 +19,7 @@ from pybtex.style.formatting import toplevel
 from pybtex.style.formatting.plain import Style as PlainStyle
 from pybtex.style.formatting.unsrt import date, pages
 from pybtex.style.labels import BaseLabelStyle
+from pybtex.style.sorting import BaseSortingStyle
 from pybtex.style.template import field, first_of, join, optional, optional_field, sentence, tag, words
 
 
@@ -37,7 +38,7 @@ class AuthorYearLabelStyle(BaseLabelStyle):
             who = _plain_text(entry.fields.get("title", entry.key))
         elif len(names) == 1:
             who = names[0]
-        elif len(names) == 2:
+        elif len(names) == 2:  # "A and others" too, as sphinxcontrib-bibtex's citations print it
             who = f"{names[0]} and {names[1]}"
         else:
             who = f"{names[0]} et al."
@@ -56,6 +57,14 @@ class AuthorYearLabelStyle(BaseLabelStyle):
                 yield label
 
 
+class AuthorYearSortingStyle(BaseSortingStyle):
+    """Entries in the order of their labels, case aside (then title): an entry without an author,
+    labelled by its title, stands where its label does, not before every other entry."""
+
+    def sorting_key(self, entry):
+        return (AuthorYearLabelStyle().format_label(entry).casefold(), entry.fields.get("title", ""))
+
+
 class Style(PlainStyle):
     """pybtex's ``plain`` style with :class:`AuthorYearLabelStyle` labels, and an article's
     volume and number shown when its pages are not known (``plain`` drops them)."""
@@ -66,6 +75,8 @@ class Style(PlainStyle):
         super().__init__(*args, **kwargs)
         self.label_style = AuthorYearLabelStyle()
         self.format_labels = self.label_style.format_labels
+        self.sorting_style = AuthorYearSortingStyle()
+        self.sort = self.sorting_style.sort
 
     def get_article_template(self, e):
         volume_and_pages = first_of[

@@ -96,8 +96,9 @@ def test_every_chapter_title_is_in_the_pdf_in_reading_order(pdf_text):
         key = _norm(title)
         assert key, f"{doc}: empty title"
         # each page of the book starts a sheet with its title (after its chapter number; the
-        # references' floated labels "[1][2]..." are painted, so written, before it)
-        starts = re.compile(r"(\[\d+\])*(\d+\.)?" + re.escape(key))
+        # references' floated labels "[Glauert, 1926][Johnson, 1980]..." are painted, so
+        # written, before it)
+        starts = re.compile(r"(\[[^\]]*\])*(\d+\.)?" + re.escape(key))
         found = next((k for k in range(at, len(sheets)) if starts.match(sheets[k])), None)
         assert found is not None, (f"{doc}: no sheet after sheet {at + 1} starts with its title {title!r} "
                                    f"(sheet {at + 1} starts {pdf_text[at][:120]!r})")
