@@ -90,12 +90,12 @@ from .nonlinear_functions import (FAMILIES, DesignedFunction, energy_basis, ener
                                   polynomial_basis)
 from .stability import psi_free_system
 
-__all__ = ["FORMAT", "STEADY_RESIDUAL_TOL", "VERSION", "StoredCertificate", "Verification", "read_certificate",
+__all__ = ["FAMILY_WORDS", "FORMAT", "STEADY_RESIDUAL_TOL", "VERSION", "StoredCertificate", "Verification", "read_certificate",
            "save_certificate", "verify"]
 
 #: A function family in words (the file's ``function.family``): "energy" is the augmented energy,
 #: not the blade's energy alone (the book's "energy function").
-_FAMILY_WORDS = {"quadratic": "quadratic function", "energy": "augmented energy",
+FAMILY_WORDS = {"quadratic": "quadratic function", "energy": "augmented energy",
                  "polynomial": "polynomial function"}
 
 #: A flight condition in words (:data:`rotorlyap.model.forward_trim.TRIM_TARGETS`).
@@ -709,7 +709,7 @@ class Verification:
         to 3 significant digits, margins to 2; round-off-level numbers as bounds,
         :func:`rotorlyap.reporting.format_small`); a failing check adds its numbers."""
         head = (f"{'VERIFIED' if self.holds else 'REFUSED'}: mu = {self.mu:g}, {_CONDITION_WORDS[self.condition]}, "
-                f"{_FAMILY_WORDS[self.function]}, bound A = {self.bound:.3g}, start region {self.start_region:.3g} "
+                f"{FAMILY_WORDS[self.function]}, bound A = {self.bound:.3g}, start region {self.start_region:.3g} "
                 "(scaled norm)")
         lines = [head]
         width = max(len(c.name) for c in self.checks)

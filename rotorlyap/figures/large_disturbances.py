@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.certificate_file import read_certificate, verify
+from ..analysis.certificate_file import FAMILY_WORDS, read_certificate, verify
 from ..analysis.certify import Candidate, certify, function_start_set
 from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
 from ..analysis.region import DEFAULT_S_MAX, SLICES, StableRegion, stable_region
@@ -268,6 +268,12 @@ class CaseResult:
         deg = np.degrees(np.asarray(self.region.scales, dtype=float)) * self.region.component_extent
         return deg * np.r_[np.ones(3), np.full(3, self.rotor_speed)]
 
+    @property
+    def capped(self) -> np.ndarray:
+        """Where :attr:`simulated` is a lower bound: the simulation returned from every amplitude it
+        tried along that component, of both signs, (6,) bool."""
+        return self.region.hit_s_max[:6] & self.region.hit_s_max[6:]
+
     def reach(self, function: str) -> np.ndarray:
         """Start ball (``lambda0``) of ``function`` over the yardstick, per component, -, (6,) (NaN:
         not tried)."""
@@ -510,7 +516,19 @@ def _entry_words(entry: tuple) -> str:
     return f"the {what} against the {_HINGE_WORDS[j]}"
 
 
-_NAMES = {"energy": "augmented energy", "quadratic": "quadratic function", "polynomial": "polynomial function"}
+_NAMES = FAMILY_WORDS
+
+
+def _sign_words(radii, max_dw) -> str:
+    """How ``W'`` behaves on the sampled spheres beyond the bound (radii in units of ``A``), in words."""
+    first = next((k for k, m in zip(radii, max_dw) if m >= 0), None)
+    below = [k for k, m in zip(radii, max_dw) if m < 0 and (first is None or k < first)]
+    if first is None:
+        return f"stays negative on every sampled sphere up to {max(radii):g} times the bound"
+    if not below:
+        return f"is positive already on the sphere of {first:g} times the bound"
+    return (f"stays negative on every sampled sphere up to {max(below):g} times the bound and is positive "
+            f"somewhere on the sphere of {first:g} times it")
 
 
 def _sig(v: float, digits: int = 2) -> float:
@@ -537,7 +555,7 @@ class LargeDisturbances:
                 "| pitch rate (deg/s) |\n|---|---|---|---|---|---|---|---|")
         lines = [head]
         for r in self.results:
-            rows = [("simulated: returns from", r.simulated, r.region.hit_s_max[:6] & r.region.hit_s_max[6:])]
+            rows = [("simulated: returns from", r.simulated, r.capped)]
             for fn, name in (("energy", "augmented energy"), ("quadratic", "quadratic function")):
                 c = r.candidate(fn)
                 if c is not None and c.start_set:
@@ -598,7 +616,7 @@ class LargeDisturbances:
                            f"{_sig(pl.width_taylor.radius.max()):g}, {pl.width_taylor.ratio:.2f} times the "
                            f"sampled variation, contains the sample: {'yes' if pl.width_taylor.contained else 'no'}")
             sim = r.simulated
-            cap = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
+            cap = r.capped
             out.append("  simulated (deg, deg/s): " + ", ".join(
                 f"{STATE_NAMES[i]} {'>= ' if cap[i] else ''}{_sig(sim[i]):g}" for i in range(6)))
         return "\n".join(out)
@@ -630,8 +648,7 @@ class LargeDisturbances:
                 f[f"ch11_{k}_ball_reach"] = _sig(100 * np.nanmin(r.reach(r.chosen)))
                 f[f"ch11_{k}_set_weakest"] = _HINGE_WORDS[int(np.nanargmin(whole))]
                 # the yardstick a lower bound along the weakest hinge: the share is an upper estimate
-                capped = r.region.hit_s_max[:6] & r.region.hit_s_max[6:]
-                f[f"ch11_{k}_set_reach_words"] = ("at most " if capped[int(np.nanargmin(whole))] else "") + \
+                f[f"ch11_{k}_set_reach_words"] = ("at most " if r.capped[int(np.nanargmin(whole))] else "") + \
                     f"{f[f'ch11_{k}_set_reach']:g}"
                 f[f"ch11_{k}_set_flap"] = _sig(r.per_component(np.asarray(r.candidate(r.chosen).start_set))[0])
             if e is not None and e.certified:
@@ -646,12 +663,7 @@ class LargeDisturbances:
                     f[f"ch11_{k}_energy_share"] = _pct(an.energy_share)  # "0", never "0.0"
                     first = next((kk for kk, m in zip(an.radii, an.max_dw) if m >= 0), math.nan)
                     f[f"ch11_{k}_positive_at"] = first
-                    below = [kk for kk, m in zip(an.radii, an.max_dw) if m < 0 and not kk > first]
-                    f[f"ch11_{k}_sign_words"] = (
-                        f"stays negative on every sampled sphere up to {max(below):g} times the bound and is "
-                        f"positive somewhere on the sphere of {first:g} times it" if math.isfinite(first) and below
-                        else f"stays negative on every sampled sphere up to {max(an.radii):g} times the bound"
-                        if not math.isfinite(first) else f"is positive already on the sphere of {first:g} times the bound")
+                    f[f"ch11_{k}_sign_words"] = _sign_words(an.radii, an.max_dw)
                     if math.isfinite(first):
                         d = np.asarray(an.direction[an.radii.index(first)])
                         top = np.argsort(-np.abs(d))[:2]
