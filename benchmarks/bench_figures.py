@@ -25,7 +25,7 @@ def main() -> int:
 
     from rotorlyap.methods import sampling
     from rotorlyap.model import trim
-    from rotorlyap.figures import paper
+    from rotorlyap.chapters import paper
 
     trim.hover_trim.cache_clear()
     sampling._sphere_points_cached.cache_clear()

@@ -11,7 +11,7 @@ The package has three layers, and data flows one way through them:
 * :mod:`rotorlyap.analysis`: the blade in the methods (Liapunov functions, technical
   stability, Floquet analysis of the blade);
 
-then :mod:`rotorlyap.figures` (one module per chapter) and the command line
+then :mod:`rotorlyap.chapters` (one module per chapter) and the command line
 (:mod:`rotorlyap.cli`). :mod:`rotorlyap.conventions` holds the names and defaults they share,
 :mod:`rotorlyap.errors` the errors, :mod:`rotorlyap.reporting` how a number is printed.
 
@@ -53,7 +53,7 @@ _PUBLIC = {
     "format_small": "reporting", "decade_above": "reporting",
 }
 
-_SUBPACKAGES = ("analysis", "cli", "conventions", "errors", "figures", "methods", "model", "reporting")
+_SUBPACKAGES = ("analysis", "cli", "conventions", "chapters", "errors", "methods", "model", "reporting")
 
 __all__ = sorted(_PUBLIC)
 

@@ -708,7 +708,7 @@ def _certify(args) -> int:
                        n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify)
     data = certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere)
     if args.plot is not None:
-        from .figures.blade_commands import plot_certificate
+        from .chapters.blade_commands import plot_certificate
 
         data["plot"] = str(_save(plot_certificate(cert), args.plot))
     if args.save is not None:
@@ -811,7 +811,7 @@ def _sweep(args) -> int:
     errors = sum(1 for e in result.column("error") if e)
     print(path)
     if args.plot is not None:
-        from .figures.blade_commands import plot_sweep_table
+        from .chapters.blade_commands import plot_sweep_table
 
         print(_save(plot_sweep_table(result), args.plot))
     print(f"certified {result.n_certified} of {len(result)} points" + (f" ({errors} failed: see the error column)"
@@ -824,14 +824,14 @@ def _sweep(args) -> int:
 
 def _save(fig, path: Path) -> Path:
     """Save a figure (PNG or SVG, by the suffix) where asked, the folder created."""
-    from .figures.blade_commands import save_figure
+    from .chapters.blade_commands import save_figure
 
     path.parent.mkdir(parents=True, exist_ok=True)
     return save_figure(fig, path)
 
 
 def _write(rows: list[dict], path: Path) -> Path:
-    from .figures.blade_commands import write_table
+    from .chapters.blade_commands import write_table
 
     path.parent.mkdir(parents=True, exist_ok=True)
     return write_table(rows, path)
@@ -877,7 +877,7 @@ def _modes(args) -> int:
     else:
         data["table"] = str(_write(rows, args.out))
     if args.plot is not None:
-        from .figures.blade_commands import plot_modes
+        from .chapters.blade_commands import plot_modes
 
         data["plot"] = str(_save(plot_modes(fan, floquet), args.plot))
     _dump(data)
@@ -920,7 +920,7 @@ def _simulate(args) -> int:
     if args.out is not None:
         data["table"] = str(_write(motion.export(), args.out))
     if args.plot is not None:
-        from .figures.blade_commands import plot_disturbed_motion
+        from .chapters.blade_commands import plot_disturbed_motion
 
         data["plot"] = str(_save(plot_disturbed_motion(motion), args.plot))
     _dump(data)
@@ -931,7 +931,7 @@ def _simulate(args) -> int:
 
 
 def _figures(args) -> int:
-    from .figures.commands import regenerate_figures
+    from .chapters.commands import regenerate_figures
 
     args.out.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()

@@ -143,7 +143,7 @@ def test_the_tables_and_figures_are_written_in_the_format_of_their_suffix(table_
     import matplotlib
 
     matplotlib.use("Agg")
-    from rotorlyap.figures.blade_commands import plot_modes, save_figure, write_table
+    from rotorlyap.chapters.blade_commands import plot_modes, save_figure, write_table
 
     omega = table_i.rotor_speed
     fan = fan_plot(table_i, [0.9 * omega, omega])

@@ -231,7 +231,7 @@ def test_figures_writes_each_figure_whole_with_its_data(capsys, tmp_path):
 
 def test_the_fig8_picture_of_one_reading_has_the_category_legend():
     """The command line's Fig 8 (one reading per picture) carries the legend of the verdicts."""
-    from rotorlyap.figures import paper
+    from rotorlyap.chapters import paper
 
     data = paper.regions_data(("forward",), (0.0, 0.1), reading="practical", n_psi=4)
     fig = paper.figure_regions_polar(data)

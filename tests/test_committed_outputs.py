@@ -150,7 +150,7 @@ def test_chapters_are_prose_with_calls_into_the_package(path):
     share = size["code"] / (size["code"] + size["markdown"])
     limit = CODE_IS_THE_LESSON.get(path.name, CODE_SHARE_LIMIT)
     assert share <= limit, (f"{path.name}: code is {share:.0%} of the chapter (limit {limit:.0%}): move the "
-                            "logic into its rotorlyap.figures module (facts(), summary(), a figure function)")
+                            "logic into its rotorlyap.chapters module (facts(), summary(), a figure function)")
     private = sorted({m.group(0) for c in nb["cells"] if c["cell_type"] == "code"
                       for m in re.finditer(r"\b[a-z_][a-z0-9_]*\._[a-zA-Z]\w*", "".join(c["source"]))})
     assert not private, f"{path.name} uses private names of the package: {private}"

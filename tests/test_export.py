@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rotorlyap.figures.export import figure_csv, format_value
-from rotorlyap.figures.theory import ConvergenceData
+from rotorlyap.chapters.export import figure_csv, format_value
+from rotorlyap.chapters.theory import ConvergenceData
 
 
 @dataclass(frozen=True)

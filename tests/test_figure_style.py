@@ -1,4 +1,4 @@
-"""The figures' legibility rule (rotorlyap.figures.style) and that every figure obeys it.
+"""The figures' legibility rule (rotorlyap.chapters.style) and that every figure obeys it.
 
 Facts checked: the displayed size of a font follows from the figure's width and the book's
 column (a 14 in figure shrunk to 672 px shows 8 pt at 5.3 px); the checker refuses small text
@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-import rotorlyap.figures as figures_pkg
-from rotorlyap.figures.style import (MIN_TEXT_PX, PAGE_WIDTH_PX, CATEGORY_COLORS, CATEGORY_HATCHES,
+import rotorlyap.chapters as figures_pkg
+from rotorlyap.chapters.style import (MIN_TEXT_PX, PAGE_WIDTH_PX, CATEGORY_COLORS, CATEGORY_HATCHES,
                                      FigureLayoutError, check_legible, enlarge_small_text, finish,
                                      max_width_in, use_retina_inline,
                                      shown_text_px, subplots)

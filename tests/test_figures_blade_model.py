@@ -16,8 +16,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 
-from rotorlyap.figures import blade_model as bm  # noqa: E402
-from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.chapters import blade_model as bm  # noqa: E402
+from rotorlyap.chapters.export import figure_csv  # noqa: E402
 from rotorlyap.model.airfoil import LinearAirfoil  # noqa: E402
 from rotorlyap.model.modes import closed_forms, hover_modes, pitch_mode  # noqa: E402
 from rotorlyap.model.parameters import CG_POSITIONS, BladeParameters  # noqa: E402

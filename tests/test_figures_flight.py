@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from rotorlyap.analysis.floquet import blade_floquet
-from rotorlyap.figures import flight
+from rotorlyap.chapters import flight
 from rotorlyap.model.blade import Blade
 from rotorlyap.model.mass import mass_properties
 from rotorlyap.model.parameters import BladeParameters
@@ -108,7 +108,7 @@ def test_the_disc_figure_is_round_and_fits_the_column():
     so the page shows it at its own size (a rescaled figure drew them as ellipses)."""
     import matplotlib.pyplot as plt
 
-    from rotorlyap.figures.style import BOOK_DPI, PAGE_WIDTH_PX
+    from rotorlyap.chapters.style import BOOK_DPI, PAGE_WIDTH_PX
 
     dd = flight.disc_data("forward", 0.25, n_azimuth=12, n_stations=6)
     fig = flight.figure_disc(dd)

@@ -1,4 +1,4 @@
-"""What the chapter "How large a disturbance" gathers and prints (rotorlyap.figures.large_disturbances).
+"""What the chapter "How large a disturbance" gathers and prints (rotorlyap.chapters.large_disturbances).
 
 Each test names the fact it checks. The chapter's own numbers are compared by nbval; here the
 data object is checked against the functions it gathers (one hover case with the quadratic
@@ -19,8 +19,8 @@ from rotorlyap import certify  # noqa: E402
 from rotorlyap.analysis.certify import Candidate  # noqa: E402
 from rotorlyap.analysis.sweep import process_map  # noqa: E402
 from rotorlyap.conventions import DEFAULT_SCALES  # noqa: E402
-from rotorlyap.figures import large_disturbances as chapter  # noqa: E402
-from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.chapters import large_disturbances as chapter  # noqa: E402
+from rotorlyap.chapters.export import figure_csv  # noqa: E402
 
 
 @pytest.fixture(scope="module")

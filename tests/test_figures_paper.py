@@ -17,9 +17,9 @@ import pytest  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 
 from rotorlyap.analysis.functions import energy_function  # noqa: E402
-from rotorlyap.figures import paper  # noqa: E402
-from rotorlyap.figures.export import figure_csv  # noqa: E402
-from rotorlyap.figures.style import MIN_TEXT_PX, check_legible  # noqa: E402
+from rotorlyap.chapters import paper  # noqa: E402
+from rotorlyap.chapters.export import figure_csv  # noqa: E402
+from rotorlyap.chapters.style import MIN_TEXT_PX, check_legible  # noqa: E402
 from rotorlyap.conventions import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES  # noqa: E402
 
 
@@ -485,7 +485,7 @@ def test_fig8_every_verdict_has_its_hatch_in_the_map_and_the_legend(regions):
     the same hatch, and the reverse-flow region a hatch of its own, outlined."""
     from matplotlib.collections import PolyCollection
 
-    from rotorlyap.figures.style import CATEGORY_HATCHES
+    from rotorlyap.chapters.style import CATEGORY_HATCHES
 
     handles = paper.category_legend_handles()
     assert [h.get_hatch() or "" for h in handles[:-1]] == list(CATEGORY_HATCHES)

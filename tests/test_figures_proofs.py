@@ -1,4 +1,4 @@
-"""The proofs chapter's data and figures (rotorlyap.figures.proofs).
+"""The proofs chapter's data and figures (rotorlyap.chapters.proofs).
 
 Facts checked: the nonlinear term starts at the linear part (-1 for Q = I) for a small tube and
 grows with the bound, the enclosure above the sampled estimate (an enclosure contains the exact
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from rotorlyap.figures import proofs
+from rotorlyap.chapters import proofs
 
 
 @pytest.fixture(scope="module")

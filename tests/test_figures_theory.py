@@ -1,4 +1,4 @@
-"""rotorlyap.figures.theory: what chapters 1 and 2 print (summary) and quote (facts), and their figures.
+"""rotorlyap.chapters.theory: what chapters 1 and 2 print (summary) and quote (facts), and their figures.
 
 Each fact must be the data field it names, rounded to the digits the chapter states; each
 summary must hold those numbers; each figure function must return a finished figure of the
@@ -17,8 +17,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import rotorlyap  # noqa: E402
-from rotorlyap.figures import theory  # noqa: E402
-from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.chapters import theory  # noqa: E402
+from rotorlyap.chapters.export import figure_csv  # noqa: E402
 from rotorlyap.methods.examples import mathieu_duffing  # noqa: E402
 
 

@@ -17,8 +17,8 @@ import pytest  # noqa: E402
 
 from rotorlyap.analysis.floquet import FloquetSweep  # noqa: E402
 from rotorlyap.conventions import DEFAULT_SCALES  # noqa: E402
-from rotorlyap.figures import validation as fv  # noqa: E402
-from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.chapters import validation as fv  # noqa: E402
+from rotorlyap.chapters.export import figure_csv  # noqa: E402
 from rotorlyap.methods.validation import MotionHistory, Validation  # noqa: E402
 from rotorlyap.model.parameters import BladeParameters  # noqa: E402
 

@@ -1,4 +1,4 @@
-"""What the chapter "Your own blade" prints and glues (rotorlyap.figures.your_blade).
+"""What the chapter "Your own blade" prints and glues (rotorlyap.chapters.your_blade).
 
 Each test names the fact it checks. The chapter's own numbers are compared by nbval; here the
 data objects are checked against the package functions they gather, and their text against
@@ -17,8 +17,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import rotorlyap  # noqa: E402
-from rotorlyap.figures import your_blade  # noqa: E402
-from rotorlyap.figures.export import figure_csv  # noqa: E402
+from rotorlyap.chapters import your_blade  # noqa: E402
+from rotorlyap.chapters.export import figure_csv  # noqa: E402
 from rotorlyap.model.modes import least_damped  # noqa: E402
 
 

@@ -4,7 +4,7 @@
     methods   (the general method)  may use: shared
     model     (the blade)           may use: shared
     analysis  (blade in methods)    may use: shared, methods, model
-    figures, cli                    may use: everything below
+    chapters, cli                   may use: everything below
 
 The import graph is read from the source (every import statement, also those inside
 functions), so a lazy import cannot hide a circle.
@@ -26,8 +26,8 @@ ALLOWED = {
     "methods": {"shared"},
     "model": {"shared"},
     "analysis": {"shared", "methods", "model"},
-    "figures": {"shared", "methods", "model", "analysis"},
-    "cli": {"shared", "methods", "model", "analysis", "figures"},
+    "chapters": {"shared", "methods", "model", "analysis"},
+    "cli": {"shared", "methods", "model", "analysis", "chapters"},
 }
 
 
@@ -116,7 +116,7 @@ def test_the_import_graph_has_no_circle(graph):
 def test_importing_the_general_method_loads_nothing_of_the_blade():
     code = ("import sys, rotorlyap.methods; "
             "print(sorted(m for m in sys.modules if m.startswith(('rotorlyap.model', 'rotorlyap.analysis', "
-            "'rotorlyap.figures'))))")
+            "'rotorlyap.chapters'))))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
 

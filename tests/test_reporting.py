@@ -49,7 +49,7 @@ def test_bad_input_says_what_is_allowed(call, match):
 def test_rounded_prints_the_digits_kept_and_glue_drops_a_fake_decimal():
     """A glued number shows what the rounding kept: 0.600 (three decimals) is not 0.6, and a
     whole number rounded to units, -21096.0, is shown -21096 (no decimal was kept)."""
-    from rotorlyap.figures.export import glue_value
+    from rotorlyap.chapters.export import glue_value
     from rotorlyap.reporting import Rounded
 
     r = Rounded(0.59996, 3)

@@ -8,7 +8,7 @@ For each advance ratio, the default ``rotorlyap.certify`` of the trimmed helicop
 blade in the forward-flight model, forward C.G.: ``BladeParameters.flight_case("forward")``) is
 made about the periodic motion refined by shooting (``refine=True``: a table that solves the
 equations to round-off, as ``rotorlyap.verify`` checks), in the norm scales of chapter 11's
-case (``rotorlyap.figures.large_disturbances.CASES``; the default ones where it gives none), and
+case (``rotorlyap.chapters.large_disturbances.CASES``; the default ones where it gives none), and
 saved as ``book/certificates/forward_mu<100 mu>.json``. Its design (the augmented energy
 in forward flight) takes minutes and its start radius depends on the last bits of the
 floating-point environment, so it is made once, here, and committed; chapter 11 and the tests
@@ -17,7 +17,7 @@ verify each file from nothing (``rotorlyap.verify``) in every run, on any machin
 For each Table I hover, the default ``certify(BladeParameters.table_i(cg), 0.0,
 condition="none", scales=...)`` (the paper's controls; the augmented energy, designed on the
 shell of the band; the norm scales of chapter 11's case,
-``rotorlyap.figures.large_disturbances.SCALE_FACTORS``: the pitch angle's and pitch rate's
+``rotorlyap.chapters.large_disturbances.SCALE_FACTORS``: the pitch angle's and pitch rate's
 scales larger than the default, so that the start set reaches further along the hinge where it
 reaches least) is saved as
 ``book/certificates/hover_<cg>.json``. Its design takes half a minute to a
@@ -58,9 +58,9 @@ def path_for(case: float | str) -> Path:
 
 def case_scales(case: float | str):
     """The norm scales of a case's certificate (a Table I hover's C.G. or an advance ratio of the
-    trimmed helicopter): chapter 11's for the case (:data:`rotorlyap.figures.large_disturbances.CASES`;
+    trimmed helicopter): chapter 11's for the case (:data:`rotorlyap.chapters.large_disturbances.CASES`;
     None: the default scales)."""
-    from rotorlyap.figures.large_disturbances import CASES
+    from rotorlyap.chapters.large_disturbances import CASES
 
     if isinstance(case, str):
         return next(c.scales for c in CASES if c.mu == 0.0 and c.blade == ("table_i", case))

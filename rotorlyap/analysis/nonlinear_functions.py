@@ -25,7 +25,7 @@ counterexamples added round by round):
     hover and trigonometric polynomials of the azimuth in forward flight. The quadratic part
     supplies the cross and correction terms that cancel the aerodynamic coupling the energy
     lacks; its derivative ``2 y^T C f / a`` still meets the inertial terms. Measured (chapter 11,
-    :func:`rotorlyap.figures.large_disturbances.anatomy`), the program gives the energy no weight
+    :func:`rotorlyap.chapters.large_disturbances.anatomy`), the program gives the energy no weight
     for the Table I forward C.G. in hover (a quadratic form designed on the shell certifies
     alone), a small one for the neutral C.G. and a negative one for the trimmed helicopter at
     mu = 0.1: the family's reach comes from shaping the quadratic form for the nonlinear blade

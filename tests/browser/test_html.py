@@ -43,9 +43,9 @@ What is checked, page by page
 * no placeholder is left in the text ("to come", "TODO", "FIXME", "TBD", "XXX");
 * figure text: every figure of the column (an image in a figure or a cell's output; not the
   theme's icons) is a PNG saved at the resolution the figures' rule
-  assumes (``rotorlyap.figures.style.BOOK_DPI``, read from its ``pHYs`` chunk) and is shown at
+  assumes (``rotorlyap.chapters.style.BOOK_DPI``, read from its ``pHYs`` chunk) and is shown at
   least as wide as the rule assumes (its natural width, or the 672 px column if wider), so that
-  its smallest text, which ``rotorlyap.figures.style.finish`` checked when the figure was made,
+  its smallest text, which ``rotorlyap.chapters.style.finish`` checked when the figure was made,
   is displayed at least ``MIN_TEXT_PX`` (8 px) high; the height is computed from the image's
   file and its displayed width;
 * shape: at both widths every figure is drawn with its file's aspect ratio (scaled, not
@@ -596,7 +596,7 @@ def test_figure_text_is_legible_at_the_displayed_width(shown, page):
     on a phone every figure is shrunk to the screen, the reader zooms). This fails if a figure was saved at another resolution than the rule
     assumes, or if the page shows it narrower than the column the rule was made for.
     """
-    from rotorlyap.figures.style import BOOK_DPI, DEVICE_PIXEL_RATIO, MIN_TEXT_PX, PAGE_WIDTH_PX
+    from rotorlyap.chapters.style import BOOK_DPI, DEVICE_PIXEL_RATIO, MIN_TEXT_PX, PAGE_WIDTH_PX
 
     here = Path(unquote(urlsplit(shown.info["href"]).path))
     small = []
@@ -605,7 +605,7 @@ def test_figure_text_is_legible_at_the_displayed_width(shown, page):
             continue
         target = (here.parent / unquote(urlsplit(img["src"]).path)).resolve()
         if target.suffix.lower() != ".png":
-            small.append(f"{img['src']}: not a PNG made by rotorlyap.figures")
+            small.append(f"{img['src']}: not a PNG made by rotorlyap.chapters")
             continue
         dpi = _png_dpi(target)
         saved_dpi = BOOK_DPI * DEVICE_PIXEL_RATIO
@@ -640,8 +640,8 @@ def test_no_word_is_split_inside_a_table_cell(shown_at, page, width):
 @pytest.mark.parametrize("page", PAGES)
 def test_raster_figures_have_two_device_pixels_per_css_pixel(shown_at, page, width):
     """Every raster figure of the column is sharp on a 2x screen: at least two image pixels
-    per CSS pixel it is shown at (rotorlyap.figures.style.DEVICE_PIXEL_RATIO; an SVG is vector)."""
-    from rotorlyap.figures.style import DEVICE_PIXEL_RATIO
+    per CSS pixel it is shown at (rotorlyap.chapters.style.DEVICE_PIXEL_RATIO; an SVG is vector)."""
+    from rotorlyap.chapters.style import DEVICE_PIXEL_RATIO
 
     soft = [f"{img['src']}: {img['width']} px shown at {img['shown']:.0f} px"
             for img in shown_at.info["images"]

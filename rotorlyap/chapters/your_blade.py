@@ -476,7 +476,7 @@ class HarmonicData:
     harmonics_deg: np.ndarray
 
     def export(self) -> dict:
-        """The columns for :func:`rotorlyap.figures.export.figure_csv`: ``mu``, then
+        """The columns for :func:`rotorlyap.chapters.export.figure_csv`: ``mu``, then
         ``<hinge>_<mean|cos|sin>_deg`` for flap, lag and pitch."""
         return {"mu": self.mu, **{f"{h}_{c}_deg": self.harmonics_deg[:, k, j]
                                   for k, h in enumerate(HINGES) for j, c in enumerate(_COMPONENTS)}}
@@ -723,7 +723,7 @@ class SweepFigureData:
     certified: np.ndarray
 
     def export(self) -> dict:
-        """Columns for :func:`rotorlyap.figures.export.figure_csv`: x, then per line its growth
+        """Columns for :func:`rotorlyap.chapters.export.figure_csv`: x, then per line its growth
         rate, start region and verdict."""
         out = {self.x_name: self.x}
         for k, s in enumerate(self.series):

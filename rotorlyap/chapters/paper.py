@@ -8,7 +8,7 @@ functions create, draw, lay out and return the whole figure of a chapter (closed
 so that a notebook shows it only where it is glued). The data objects of chapters 5 and 6
 have a ``summary()`` (the text its chapter prints, rounded to the digits the computation
 determines) and a ``facts()`` (the numbers its chapter quotes, ``{glue name: value}``, for
-:func:`rotorlyap.figures.export.glue_facts`). Every quantity computed in a
+:func:`rotorlyap.chapters.export.glue_facts`). Every quantity computed in a
 reading carries that reading's label, :data:`READING_LABELS`: the strict reading (suprema
 and infima over whole spheres, the theorem as stated) is a certificate as far as the search
 is exhaustive; the practical reading (``W`` and ``W'`` only along test disturbances) is an
@@ -193,7 +193,7 @@ def _line(*parts) -> str:
 
 #: Hatch of the region where reverse flow reaches the blade root, drawn over the verdict maps
 #: with an outline: vertical lines, unlike the diagonal and dotted hatches of the verdicts
-#: (:data:`rotorlyap.figures.style.CATEGORY_HATCHES`).
+#: (:data:`rotorlyap.chapters.style.CATEGORY_HATCHES`).
 REVERSE_FLOW_HATCH = "||"
 
 
@@ -433,7 +433,7 @@ def plot_hover_trim(data: HoverTrimData, axes) -> None:
 
 def figure_hover_trim(data: HoverTrimData, figsize=(9.0, 4.2)):
     """The book's Fig. 4 (:func:`plot_hover_trim` on two panels), laid out and checked
-    (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    (:func:`rotorlyap.chapters.style.finish`); returns the Figure."""
     fig, axes = subplots(1, 2, figsize=figsize, gridspec_kw=dict(width_ratios=(1.2, 1)))
     plot_hover_trim(data, axes)
     return finish(fig)
@@ -1021,7 +1021,7 @@ def plot_hover_rate(data: HoverRateData, axes) -> None:
 
 def figure_hover_rate(data: HoverRateData, figsize=(9.0, 8.8)):
     """The book's Fig. 5 (:func:`plot_hover_rate` on a 2 x 2 grid), laid out and checked
-    (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    (:func:`rotorlyap.chapters.style.finish`); returns the Figure."""
     fig, axes = subplots(2, 2, figsize=figsize)
     plot_hover_rate(data, axes.ravel())
     return finish(fig)
@@ -1395,7 +1395,7 @@ def plot_w_spheres(data: WSpheresData, axes) -> None:
 
 def figure_w_spheres(data: WSpheresData, figsize=(8.6, 6.6)):
     """The book's Fig. 6 (:func:`plot_w_spheres`, the azimuth panel above the other), laid out
-    and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    and checked (:func:`rotorlyap.chapters.style.finish`); returns the Figure."""
     fig, axes = subplots(2, 1, figsize=figsize, gridspec_kw=dict(height_ratios=(1.4, 1)))
     plot_w_spheres(data, axes)
     return finish(fig)
@@ -1542,7 +1542,7 @@ def plot_rate_azimuth(data: RateAzimuthData, axes) -> None:
 
 def figure_rate_azimuth(data: RateAzimuthData, figsize=(9.0, 4.2)):
     """The book's Fig. 7 (:func:`plot_rate_azimuth`, one panel per reading, shared ``W'`` axis),
-    laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    laid out and checked (:func:`rotorlyap.chapters.style.finish`); returns the Figure."""
     fig, axes = subplots(1, 2, figsize=figsize, sharey=True)
     plot_rate_azimuth(data, axes)
     return finish(fig)
@@ -1645,7 +1645,7 @@ class RegionsData:
         return "\n".join(lines)
 
     def export(self) -> list:
-        """One row per (case, mu, psi) cell for :func:`rotorlyap.figures.export.figure_csv`:
+        """One row per (case, mu, psi) cell for :func:`rotorlyap.chapters.export.figure_csv`:
         case index, ``mu``, ``psi`` (deg), category, stable and ``max_dW`` (J/rad)."""
         k, m, n = self.category.shape
         return [("case", np.repeat(np.arange(k), m * n)),
@@ -1891,7 +1891,7 @@ def figure_regions_polar(*readings: RegionsData, figsize=None):
     column per reading and one row per case, with one reading its cases two to a row; the
     category legend below (or in a spare cell). ``figsize`` defaults to 4.3 in per column and
     3.75 in per row plus the legend (8.6 x 12.0 in for the book's two readings of three cases).
-    Laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    Laid out and checked (:func:`rotorlyap.chapters.style.finish`); returns the Figure."""
     nrows, ncols, panels = _regions_grid(readings)
     spare = len(readings) == 1 and nrows * ncols > len(panels)
     if figsize is None:
@@ -1908,7 +1908,7 @@ def figure_regions_plane(*readings: RegionsData, figsize=None):
     """The maps of :func:`figure_regions_polar` in the (psi, mu) plane
     (:func:`plot_regions_plane`), in the same grid; ``figsize`` defaults to 4.3 in per column
     and 2.75 in per row plus the legend (8.6 x 9.0 in for the book's two readings of three
-    cases). Laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    cases). Laid out and checked (:func:`rotorlyap.chapters.style.finish`); returns the Figure."""
     nrows, ncols, panels = _regions_grid(readings)
     spare = len(readings) == 1 and nrows * ncols > len(panels)
     if figsize is None:
@@ -2208,7 +2208,7 @@ class SensitivityData:
         }
 
     def export(self) -> list:
-        """Named columns for :func:`rotorlyap.figures.export.figure_csv`: ``v<k>_category``
+        """Named columns for :func:`rotorlyap.chapters.export.figure_csv`: ``v<k>_category``
         (mu, psi) and ``v<k>_A_used`` (mu) of variant ``k``, then ``mu`` and ``psi_deg``."""
         return ([(f"v{i}_" + k, v) for i, r in enumerate(self.regions)
                  for k, v in (("category", r.category[0]), ("A_used", r.A_used[0]))]
@@ -2266,7 +2266,7 @@ def plot_sensitivity(data: SensitivityData, axes) -> None:
 def figure_sensitivity(data: SensitivityData, figsize=(8.6, 10.4)):
     """The book's sensitivity figure (:func:`plot_sensitivity` on a grid two panels wide, shared
     axes, the legend in the spare cell), laid out and checked
-    (:func:`rotorlyap.figures.style.finish`); returns the Figure."""
+    (:func:`rotorlyap.chapters.style.finish`); returns the Figure."""
     nrows = (len(data.names) + 2) // 2
     fig, axes = subplots(nrows, 2, figsize=figsize, sharex=True, sharey=True)
     plot_sensitivity(data, axes)
@@ -2473,7 +2473,7 @@ def plot_convergence(data: ConvergenceData, axes) -> None:
 
 def figure_convergence(data: ConvergenceData, figsize=(9.0, 7.4)):
     """The book's convergence figure (:func:`plot_convergence`: (a) and (b) side by side, (c)
-    below them), laid out and checked (:func:`rotorlyap.figures.style.finish`); returns the
+    below them), laid out and checked (:func:`rotorlyap.chapters.style.finish`); returns the
     Figure."""
     fig = figure(figsize=figsize)
     grid = fig.add_gridspec(2, 2, height_ratios=(1.1, 1))
@@ -2509,7 +2509,7 @@ class ClaimsTable:
     rows: tuple
 
     def markdown(self) -> str:
-        """The table in Markdown (:func:`rotorlyap.figures.export.markdown_table`), its symbols
+        """The table in Markdown (:func:`rotorlyap.chapters.export.markdown_table`), its symbols
         typeset (:func:`myst_math`)."""
         return markdown_table([myst_math(h) for h in self.header],
                               [[myst_math(c) for c in r] for r in self.rows])

@@ -1,7 +1,7 @@
 """Tables and figures of one blade for the command line (``rotorlyap modes``, ``simulate``, ``--plot``).
 
 Each ``plot_*`` function draws one result of the library into a new figure (closed in pyplot,
-laid out and checked for legibility by :func:`rotorlyap.figures.style.finish`):
+laid out and checked for legibility by :func:`rotorlyap.chapters.style.finish`):
 
 * :func:`plot_modes`: the fan diagram (:func:`rotorlyap.analysis.modes.fan_plot`: frequency in Hz
   against rotor speed in rad/s with the 1/rev to 4/rev lines, damping ratio) and the Floquet modes

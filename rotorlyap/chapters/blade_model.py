@@ -1,16 +1,16 @@
 """Figures, tables and printed numbers of the blade-model and Table I chapters.
 
 One data function (returning a frozen dataclass, no plotting) and one drawing function (taking
-that data and a matplotlib ``Axes``) per figure panel, as in :mod:`rotorlyap.figures.theory`,
+that data and a matplotlib ``Axes``) per figure panel, as in :mod:`rotorlyap.chapters.theory`,
 and one function per figure that creates the whole matplotlib ``Figure`` from the data
 (``figure_*``). Every data object a chapter prints or quotes has
 
 * ``summary()``: the text the chapter prints, rounded to the digits the computation
   determines (README, "What a committed output may print");
 * ``facts()``: ``{glue name: value}``, the numbers the chapter's text quotes, rounded the same
-  way (glued with :func:`rotorlyap.figures.export.glue_facts`);
+  way (glued with :func:`rotorlyap.chapters.export.glue_facts`);
 * ``markdown()`` for a table, and ``export()`` where the CSV of a figure is not the
-  dataclass itself (:func:`rotorlyap.figures.export.figure_csv`).
+  dataclass itself (:func:`rotorlyap.chapters.export.figure_csv`).
 
 Chapter 3, the blade model:
 
@@ -248,7 +248,7 @@ class SchematicData:
     stations: np.ndarray
 
     def export(self) -> dict:
-        """The fields for :func:`~rotorlyap.figures.export.figure_csv`, without the C.G. mapping
+        """The fields for :func:`~rotorlyap.chapters.export.figure_csv`, without the C.G. mapping
         (its values are in the chapter's text and in Table I)."""
         return {f.name: getattr(self, f.name) for f in fields(self) if f.name != "cg_positions"}
 
@@ -1225,7 +1225,7 @@ class CGSweepPairData:
     without_damping: CGSweepData
 
     def export(self) -> dict[str, np.ndarray]:
-        """Every array of both sweeps for :func:`~rotorlyap.figures.export.figure_csv`; those of
+        """Every array of both sweeps for :func:`~rotorlyap.chapters.export.figure_csv`; those of
         the second prefixed ``no_pitch_damping_``, complex eigenvalues split into ``_real`` and
         ``_imag``."""
         cols: dict[str, np.ndarray] = {}
@@ -1326,7 +1326,7 @@ def format_value(value: Any) -> str:
 
 def markdown_table(header: Sequence[str], rows: Sequence[Sequence[Any]]) -> str:
     """A Markdown pipe table, numbers written by :func:`format_value`
-    (:func:`rotorlyap.figures.export.markdown_table`)."""
+    (:func:`rotorlyap.chapters.export.markdown_table`)."""
     return _markdown_table(header, rows, fmt=format_value)
 
 

@@ -8,7 +8,7 @@ paper leaves open do to the stability verdicts (inflow model, compressibility, t
 pitch-flap coupling, the pitch inertia), and tests its Fig. 8 under every combination of the
 readings it leaves open (:func:`forensic_data`).
 
-As in :mod:`rotorlyap.figures.paper`, data functions return frozen dataclasses with a
+As in :mod:`rotorlyap.chapters.paper`, data functions return frozen dataclasses with a
 ``summary()`` (the printed text, rounded to the digits the computation determines) and a
 ``facts()`` (the numbers the chapter quotes); ``figure_*`` functions return closed figures.
 Growth rates are the largest real part of the Floquet exponents, per radian of azimuth ("per
@@ -397,7 +397,7 @@ def figure_disc(data: DiscData, figsize=(6.4, 4.5)):
     the colour bar and the legend of the hatches below. Returns the figure.
 
     The discs are round (equal aspect), and the figure is narrower than the book's text column
-    (:data:`rotorlyap.figures.style.PAGE_WIDTH_PX`), so that it is shown at its own size and not
+    (:data:`rotorlyap.chapters.style.PAGE_WIDTH_PX`), so that it is shown at its own size and not
     rescaled into ellipses."""
     from matplotlib.colors import BoundaryNorm
     from matplotlib.lines import Line2D
@@ -1133,9 +1133,9 @@ def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candida
                  workers: int | None = None):
     """The engine's verdicts about the trimmed helicopter's periodic motion
     (:meth:`BladeParameters.flight_case`, :func:`forward_flight_trim`, its own state in hover),
-    as a :class:`rotorlyap.figures.validation.ScanData` (for
-    :func:`rotorlyap.figures.validation.figure_scan`): categories of
-    :data:`rotorlyap.figures.validation.SCAN_CATEGORY_NAMES`, 4 where the linearised blade is
+    as a :class:`rotorlyap.chapters.validation.ScanData` (for
+    :func:`rotorlyap.chapters.validation.figure_scan`): categories of
+    :data:`rotorlyap.chapters.validation.SCAN_CATEGORY_NAMES`, 4 where the linearised blade is
     unstable and no quadratic function exists. The trims run here; the cells, independent, in
     ``workers`` fresh processes (default: every core; 1: here, one after the other; the same
     verdicts either way, :func:`rotorlyap.analysis.sweep.process_map`).

@@ -1,7 +1,7 @@
 """Regenerate the data (CSV) and pictures (PNG) of the paper's Figs 4-8 into a folder.
 
 Used by ``python -m rotorlyap figures --out DIR``. Each figure calls the same data and
-drawing functions as the book (:mod:`rotorlyap.figures.paper`), laid out and checked for
+drawing functions as the book (:mod:`rotorlyap.chapters.paper`), laid out and checked for
 legibility there, so the files match the book's figures (with coarser grids under
 ``quick=True``); Fig 8 shows one reading per file, its cases two to a row with the category
 legend.

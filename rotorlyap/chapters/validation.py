@@ -23,11 +23,11 @@ of the long simulations).
 Every data object has ``summary()``, the text the chapter prints (rounded to the digits the
 computation determines, README "What a committed output may print"), and ``facts()``, the
 numbers the chapter's text quotes, ``{glue name: rounded value}``
-(:func:`rotorlyap.figures.export.glue_facts`). Each figure has a ``figure_*`` function that
+(:func:`rotorlyap.chapters.export.glue_facts`). Each figure has a ``figure_*`` function that
 creates, draws and returns it (closed in pyplot, so that only its glued copy is shown), and the
-figure's data object an ``export()`` for :func:`rotorlyap.figures.export.figure_csv`.
+figure's data object an ``export()`` for :func:`rotorlyap.chapters.export.figure_csv`.
 
-Conventions as :mod:`rotorlyap.figures.paper`: ``psi = 0`` over the tail, ``psi = 90 deg``
+Conventions as :mod:`rotorlyap.chapters.paper`: ``psi = 0`` over the tail, ``psi = 90 deg``
 the advancing side; growth rates and frequencies per rev.
 """
 
@@ -223,7 +223,7 @@ class SteadyMotions:
         return None if m is None else m.steady
 
     def export(self) -> dict:
-        """The arrays for :func:`rotorlyap.figures.export.figure_csv`."""
+        """The arrays for :func:`rotorlyap.chapters.export.figure_csv`."""
         return {"mu": self.mu_values, "found": self.found, "distance": self.distance, "residual": self.residual,
                 "harmonics_deg": self.harmonics_deg, "psi_deg": np.degrees(self.psi_plot),
                 "angles_deg": self.angles_deg, "hover_deg": self.hover_deg}
@@ -567,7 +567,7 @@ class FloquetData:
     hover: tuple
 
     def export(self) -> list:
-        """Named columns for :func:`rotorlyap.figures.export.figure_csv` (long layout)."""
+        """Named columns for :func:`rotorlyap.chapters.export.figure_csv` (long layout)."""
         out = [("mu", self.mu_values)]
         for case, sp, sh in zip(self.cases, self.periodic, self.hover):
             for tag, sw in (("periodic", sp), ("hover", sh)):
@@ -1265,7 +1265,7 @@ _SCAN_HATCHES = CATEGORY_HATCHES + SCAN_EXTRA_HATCHES
 
 def plot_scan(data: ScanData, axes, *, rows=None) -> None:
     """The verdicts in the (psi, mu) plane: one row per candidate, one column per case. Each
-    category has its colour and its hatch (:data:`rotorlyap.figures.style.CATEGORY_HATCHES`,
+    category has its colour and its hatch (:data:`rotorlyap.chapters.style.CATEGORY_HATCHES`,
     ``SCAN_EXTRA_HATCHES``), so that the map also reads without colour. The candidate's label
     is the title of the row's middle panel; the figure names the columns (:func:`figure_scan`)."""
     rows = list(range(len(data.keys)) if rows is None else rows)
@@ -1772,7 +1772,7 @@ class ValidationData:
         return markdown_table(CONFUSION_HEADER, self.rows())
 
     def export(self) -> list:
-        """Named columns of the forward-C.G. motions for :func:`rotorlyap.figures.export.figure_csv`."""
+        """Named columns of the forward-C.G. motions for :func:`rotorlyap.chapters.export.figure_csv`."""
         return ([(f"v{i}_" + k, getattr(v, k)) for i, v in enumerate(self.forward)
                  for k in ("radius", "max_norm", "bounded", "psi_index")]
                 + [(f"v{i}_covered_" + n, v.covered[j]) for i, v in enumerate(self.forward)
@@ -2295,7 +2295,7 @@ class OriginData:
         return self.max_dW / self.max_W
 
     def export(self) -> dict:
-        """The arrays for :func:`rotorlyap.figures.export.figure_csv`."""
+        """The arrays for :func:`rotorlyap.chapters.export.figure_csv`."""
         return {"radius": self.radii, "labels": list(self.labels), "max_dW": self.max_dW, "max_W": self.max_W}
 
     def summary(self) -> str:
