@@ -51,7 +51,7 @@ What is checked, page by page
 * shape: at both widths every figure is drawn with its file's aspect ratio (scaled, not
   squeezed, when a phone's column narrows it);
 * a screenshot of the whole page is saved under ``_build/screenshots/`` (same path as the
-  page, ``.png``) for a person to look at.
+  page, ``.jpg``) for a person to look at.
 
 Without ``_build/html`` (the plain test run happens before the book is built) or without
 Chromium the tests skip with the reason; ``ROTORLYAP_REQUIRE_BROWSER=1`` (set by ``.ci/run``)
@@ -356,9 +356,10 @@ reference was one page 495,000 px tall)."""
 
 
 def screenshot_path(page: str, width: int) -> Path:
-    """Where the screenshot of ``page`` at ``width`` px is saved: ``_build/screenshots/<page>.png``
-    at 1280 px, ``_build/screenshots/<width>px/<page>.png`` otherwise."""
-    name = page[:-len(".html")] + ".png"
+    """Where the screenshot of ``page`` at ``width`` px is saved (a JPEG: see
+    :meth:`cdp_pipe.Page.screenshot`): ``_build/screenshots/<page>.jpg`` at 1280 px,
+    ``_build/screenshots/<width>px/<page>.jpg`` otherwise."""
+    name = page[:-len(".html")] + ".jpg"
     return SCREENSHOTS / name if width == WIDTHS[0] else SCREENSHOTS / f"{width}px" / name
 
 
@@ -554,15 +555,24 @@ def _png_dpi(path: Path) -> float | None:
     return None
 
 
-def _png_size(path: Path) -> tuple[int, int]:
-    head = path.read_bytes()[:24]
-    assert head[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG"
-    return struct.unpack(">II", head[16:24])
+
+def _jpeg_size(path: Path) -> tuple[int, int]:
+    """Width and height of a JPEG from its start-of-frame segment."""
+    data = path.read_bytes()
+    assert data[:2] == b"\xff\xd8", f"{path} is not a JPEG"
+    pos = 2
+    while pos + 4 <= len(data):
+        marker, length = data[pos + 1], struct.unpack(">H", data[pos + 2:pos + 4])[0]
+        if 0xC0 <= marker <= 0xCF and marker not in (0xC4, 0xC8, 0xCC):
+            height, width = struct.unpack(">HH", data[pos + 5:pos + 9])
+            return width, height
+        pos += 2 + length
+    raise AssertionError(f"{path}: no frame size in the JPEG")
 
 
 @pytest.mark.parametrize("page", PAGES)
 def test_screenshot_saved(shown, page):
-    width, height = _png_size(shown.screenshot)
+    width, height = _jpeg_size(shown.screenshot)
     assert (width, height) == shown.screenshot_size
     assert width == 1280 and height >= 300, f"{shown.screenshot}: {width} x {height}"
 
@@ -711,5 +721,5 @@ def test_the_page_never_scrolls_sideways(shown_at, page, width):
 @pytest.mark.parametrize("page", PAGES)
 def test_phone_screenshot_saved(tab, page):
     out = render(tab, page, WIDTHS[1])
-    width, height = _png_size(out.screenshot)
+    width, height = _jpeg_size(out.screenshot)
     assert (width, height) == out.screenshot_size and width == WIDTHS[1] and height >= 300
