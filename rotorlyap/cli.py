@@ -72,8 +72,6 @@ __all__ = ["build_parser", "main"]
 CG_CHOICES = ("forward", "neutral", "backward")
 CONDITIONS = ("propulsive", "flapping", "none")  # rotorlyap.model.forward_trim.TRIM_TARGETS
 FUNCTION_CHOICES = ("auto", "quadratic", "energy", "polynomial")  # rotorlyap.analysis.certify.FUNCTIONS
-_FUNCTION_NAMES = {"quadratic": "quadratic function", "energy": "augmented energy (designed)",
-                   "polynomial": "polynomial function (designed)"}
 HINGE_SYMBOLS = ("flap", "lag", "pitch")  # rotorlyap.conventions.HINGES: the order of the state
 SIGNIFICANT = 4  # digits of a printed number
 MAX_LIST = 10_000  # values of one grid axis (a start:stop:step typo should not start a week of work)
@@ -252,6 +250,9 @@ def _disturbance(text: str) -> dict[str, float]:
 
 
 # ---------------------------------------------------------------------- the parser
+#
+# build_parser() adds one subcommand each with _add_<command>(sub); the options two or more
+# commands share are added by the small helpers below (the help texts that differ are passed in).
 
 
 def _blade_options(p: argparse.ArgumentParser) -> None:
@@ -262,28 +263,64 @@ def _blade_options(p: argparse.ArgumentParser) -> None:
                         "explicitly, it overrides the file's cg_position")
 
 
-def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
-    """The argument parser of ``python -m rotorlyap`` (and of the ``rotorlyap`` command, ``prog``)."""
+def _mu_option(p: argparse.ArgumentParser) -> None:
+    """``--mu``: one advance ratio (analyse, certify, simulate)."""
     from .conventions import MAX_ADVANCE_RATIO
 
-    parser = argparse.ArgumentParser(
-        prog=prog,
-        description="Technical stability of the Narkiewicz & Lucjanek (1989) rotor blade by "
-                    "Liapunov's direct method.",
-    )
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{analyse,certify,verify,sweep,modes,simulate,figures}")
+    p.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
+                   help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
 
+
+def _mu_list_option(p: argparse.ArgumentParser, default: list[float], help: str) -> None:
+    """``--mu``: a list of advance ratios (sweep, modes)."""
+    from .conventions import MAX_ADVANCE_RATIO
+
+    p.add_argument("--mu", type=_float_list("--mu", 0.0, MAX_ADVANCE_RATIO), default=default, help=help)
+
+
+def _norm_options(p: argparse.ArgumentParser, bound_help: str) -> None:
+    """``--A`` and ``--scales``: the bound of the scaled norm and its scales (analyse, certify)."""
+    p.add_argument("--A", type=_float_in("--A", 0.0, 1e3, open_lo=True), default=None, help=bound_help)
+    p.add_argument("--scales", type=_scales, default=None,
+                   help="6 norm scales a_i in deg and deg/rad, e.g. '2 2 1 2 0.5 5' (the default)")
+
+
+def _search_options(p: argparse.ArgumentParser, *, n_psi: int = 36, psi_help: str,
+                    sphere_help: str = "quasi-random directions per sphere") -> None:
+    """``--n-psi`` and ``--n-sphere``: the sizes of the search (analyse, certify, sweep, simulate)."""
+    p.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=n_psi, help=psi_help)
+    p.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024, help=sphere_help)
+
+
+def _condition_option(p: argparse.ArgumentParser, help: str) -> None:
+    """``--condition``: one flight condition (certify, modes, simulate)."""
+    p.add_argument("--condition", choices=CONDITIONS, default="propulsive", help=help)
+
+
+def _function_option(p: argparse.ArgumentParser, default: str, help: str) -> None:
+    """``--function``: the Liapunov function (certify, sweep)."""
+    p.add_argument("--function", choices=FUNCTION_CHOICES, default=default, help=help)
+
+
+def _table_option(p: argparse.ArgumentParser, *, required: bool = False) -> None:
+    """``--out``: the table, CSV or JSON by its suffix (sweep, modes, simulate)."""
+    p.add_argument("--out", type=_table_path, default=None, required=required,
+                   help="the table: FILE.csv or FILE.json")
+
+
+def _plot_option(p: argparse.ArgumentParser, help: str) -> None:
+    """``--plot``: the figure, PNG or SVG by its suffix (certify, sweep, modes, simulate)."""
+    p.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg", help=help)
+
+
+def _add_analyse(sub) -> None:
     a = sub.add_parser("analyse", help="one stability analysis of a blade, printed as JSON",
                        description="Run blade_stability for one blade and print the result as JSON. "
                                    "'certified' is true only for a numerical certificate: strict reading, "
                                    "sound rule and every azimuth certified.")
     _blade_options(a)
-    a.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
-                   help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
-    a.add_argument("--A", type=_float_in("--A", 0.0, 1e3, open_lo=True), default=None,
-                   help="bound of the scaled norm (default: the report's choice, 1)")
-    a.add_argument("--scales", type=_scales, default=None,
-                   help="6 norm scales a_i in deg and deg/rad, e.g. '2 2 1 2 0.5 5' (the default)")
+    _mu_option(a)
+    _norm_options(a, "bound of the scaled norm (default: the report's choice, 1)")
     a.add_argument("--reading", choices=("strict", "practical"), default="strict",
                    help="strict: whole spheres (a certificate); practical: the 12 signed axes only (an indicator)")
     a.add_argument("--rule", choices=("paper", "sound"), default=None,
@@ -294,43 +331,49 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
                    help="steady motion: the hover equilibrium (the paper) or the true periodic motion")
     a.add_argument("--lyapunov", choices=("energy", "quadratic"), default="energy",
                    help="Liapunov function: the paper's energy, or x^T P x from the periodic Lyapunov equation")
-    a.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=72, help="azimuths of the grid")
-    a.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
-                   help="quasi-random directions per sphere (strict reading)")
+    _search_options(a, n_psi=72, psi_help="azimuths of the grid",
+                    sphere_help="quasi-random directions per sphere (strict reading)")
 
+
+def _add_certify(sub) -> None:
     c = sub.add_parser("certify", help="certify the trimmed blade (rotorlyap.certify), printed as JSON",
                        description="Trim the helicopter, take the blade's own steady motion, a Liapunov "
                                    "function (by default the larger certificate of the quadratic function and "
                                    "the augmented energy) and the sound rule (rotorlyap.certify); print what is "
                                    "certified, per hinge in deg and deg/s, as JSON.")
     _blade_options(c)
-    c.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
-                   help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
-    c.add_argument("--condition", choices=CONDITIONS, default="propulsive",
-                   help="propulsive: the trimmed helicopter (default); flapping: hover collective, cyclic "
-                        "for zero flapping; none: the paper's hover controls")
-    c.add_argument("--A", type=_float_in("--A", 0.0, 1e3, open_lo=True), default=None,
-                   help="requested bound of the scaled norm (default 1; the sound rule reduces it until it holds)")
-    c.add_argument("--scales", type=_scales, default=None,
-                   help="6 norm scales a_i in deg and deg/rad, e.g. '2 2 1 2 0.5 5' (the default)")
-    c.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of the grid")
-    c.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
-                   help="quasi-random directions per sphere")
-    c.add_argument("--function", choices=FUNCTION_CHOICES, default="auto",
-                   help="the Liapunov function: auto (default: the quadratic function and the augmented "
-                        "energy, the larger certificate; tens of seconds), quadratic (seconds, the linear "
-                        "range), energy (the augmented energy), polynomial")
+    _mu_option(c)
+    _condition_option(c, "propulsive: the trimmed helicopter (default); flapping: hover collective, cyclic "
+                         "for zero flapping; none: the paper's hover controls")
+    _norm_options(c, "requested bound of the scaled norm (default 1; the sound rule reduces it until it holds)")
+    _search_options(c, psi_help="azimuths of the grid")
+    _function_option(c, "auto", "the Liapunov function: auto (default: the quadratic function and the augmented "
+                                "energy, the larger certificate; tens of seconds), quadratic (seconds, the linear "
+                                "range), energy (the augmented energy), polynomial")
     c.add_argument("--verify", action="store_true",
                    help="also prove the certificate's own function by ball arithmetic (rotorlyap.certify("
                         "verify=True)): seconds in hover, minutes in forward flight; adds 'proof' and "
                         "'proved_part' (what is proved, or why nothing is) to the JSON")
-    c.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
-                   help="also draw the certified start region and bound per hinge (deg, deg/s)")
+    _plot_option(c, "also draw the certified start region and bound per hinge (deg, deg/s)")
     c.add_argument("--save", type=Path, default=None, metavar="FILE.json",
                    help="also write the certificate as a file that 'verify' checks from nothing "
                         "(rotorlyap.Certificate.save; an error if nothing is certified)")
-    _verify_parser(sub)
 
+
+def _add_verify(sub) -> None:
+    v = sub.add_parser("verify", help="check a certificate file from nothing (rotorlyap.verify)",
+                       description="Rebuild the blade, the steady motion and the function of a certificate file "
+                                   "(written by 'certify --save') and check every claim again: the steady "
+                                   "motion against the equations, the level facts and condition (h) on the band "
+                                   "by the sound rule's final check. Exit status 0 if every claim holds, 1 if one "
+                                   "fails, 2 for a file that cannot be read as a certificate.")
+    v.add_argument("file", type=Path, metavar="FILE", help="the certificate file (JSON)")
+    v.add_argument("--prove", action="store_true",
+                   help="also prove a quadratic function's certificate by ball arithmetic (seconds in hover, "
+                        "minutes in forward flight; an error, exit status 1, for a designed function)")
+
+
+def _add_sweep(sub) -> None:
     s = sub.add_parser("sweep", help="certify over a grid (mu, C.G., A, any parameter), one CSV/JSON table",
                        description="Run the certificate (as the certify command) at every point of a "
                                    "full-factorial grid and write one table, a row per point. Lists are "
@@ -341,8 +384,7 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
                    help="the base blade from a parameter file (TOML); default: Table I")
     s.add_argument("--cg-base", dest="cg_base", choices=CG_CHOICES, default=None,
                    help="the base blade's C.G. case (Table I; with --params it overrides the file's)")
-    s.add_argument("--mu", type=_float_list("--mu", 0.0, MAX_ADVANCE_RATIO), default=[0.0],
-                   help="advance ratios, e.g. 0,0.1,0.2 or 0:0.3:0.05 (default 0)")
+    _mu_list_option(s, [0.0], "advance ratios, e.g. 0,0.1,0.2 or 0:0.3:0.05 (default 0)")
     s.add_argument("--cg", type=_name_list("--cg", CG_CHOICES), default=None,
                    help="C.G. cases to sweep, e.g. forward,backward")
     s.add_argument("--A", type=_float_list("--A", 0.0, 1e3, open_lo=True), default=None,
@@ -352,23 +394,21 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
                         "repeat for more fields")
     s.add_argument("--condition", type=_name_list("--condition", CONDITIONS), default=["propulsive"],
                    help="flight conditions, e.g. propulsive,none (default propulsive)")
-    s.add_argument("--out", type=_table_path, required=True, help="the table: FILE.csv or FILE.json")
-    s.add_argument("--function", choices=FUNCTION_CHOICES, default="quadratic",
-                   help="the Liapunov function of every point: quadratic (default: seconds a point), auto "
-                        "(the larger of the quadratic function and the augmented energy: tens of seconds a "
-                        "point), energy, polynomial")
+    _table_option(s, required=True)
+    _function_option(s, "quadratic", "the Liapunov function of every point: quadratic (default: seconds a point), "
+                                     "auto (the larger of the quadratic function and the augmented energy: tens of "
+                                     "seconds a point), energy, polynomial")
     s.add_argument("--workers", type=_int_at_least("--workers", 1), default=None,
                    help="processes (or local Dask workers); default every core; 1 runs in this process")
     s.add_argument("--scheduler", default=None, metavar="local|ADDRESS",
                    help="run on Dask: 'local' (a local cluster) or a scheduler address tcp://host:port; "
                         'needs pip install "dask[distributed]"')
-    s.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of each certificate")
-    s.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
-                   help="quasi-random directions per sphere")
-    s.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
-                   help="also draw the sweep: the largest Floquet real part and the certified flap start "
-                        "region against mu (or the last column that varies), a line per value of the others")
+    _search_options(s, psi_help="azimuths of each certificate")
+    _plot_option(s, "also draw the sweep: the largest Floquet real part and the certified flap start "
+                    "region against mu (or the last column that varies), a line per value of the others")
 
+
+def _add_modes(sub) -> None:
     m = sub.add_parser("modes", help="the blade's modes: a fan diagram against rotor speed and Floquet modes "
                                      "against mu, a table (CSV/JSON) and a figure",
                        description="The hover modes (frequency in /rev and Hz, damping ratio) at each rotor "
@@ -390,17 +430,17 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
     m.add_argument("--vacuum", action="store_true",
                    help="the fan diagram in vacuum (no air: springs, centrifugal and inertial forces) at the "
                         "nominal hover collective, instead of the hover trim at each speed")
-    m.add_argument("--mu", type=_float_list("--mu", 0.0, MAX_ADVANCE_RATIO), default=[0.0, 0.05, 0.1, 0.15, 0.2],
-                   help="advance ratios of the Floquet modes, e.g. 0:0.3:0.05 (default 0:0.2:0.05); the modes "
-                        "are followed from hover on steps of at most 0.025")
+    _mu_list_option(m, [0.0, 0.05, 0.1, 0.15, 0.2],
+                    "advance ratios of the Floquet modes, e.g. 0:0.3:0.05 (default 0:0.2:0.05); the modes "
+                    "are followed from hover on steps of at most 0.025")
     m.add_argument("--no-floquet", action="store_true", help="the fan diagram only")
-    m.add_argument("--condition", choices=CONDITIONS, default="propulsive",
-                   help="the trim of the Floquet modes (as certify; default propulsive)")
-    m.add_argument("--out", type=_table_path, default=None, help="the table: FILE.csv or FILE.json")
-    m.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
-                   help="the figure: fan diagram (Hz against rad/s, 1/rev to 4/rev lines) and damping; "
-                        "Floquet frequency and growth rate against mu")
+    _condition_option(m, "the trim of the Floquet modes (as certify; default propulsive)")
+    _table_option(m)
+    _plot_option(m, "the figure: fan diagram (Hz against rad/s, 1/rev to 4/rev lines) and damping; "
+                    "Floquet frequency and growth rate against mu")
 
+
+def _add_simulate(sub) -> None:
     d = sub.add_parser("simulate", help="the nonlinear motion of the trimmed blade after a disturbance, a table "
                                         "and a figure",
                        description="Trim the helicopter at --mu, disturb the blade's steady motion at azimuth 0 "
@@ -409,43 +449,40 @@ def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
                                    "<hinge>_steady_deg, <hinge>_deviation_deg, scaled_norm (and <hinge>_bound_deg "
                                    "with --certify). Prints a JSON summary.")
     _blade_options(d)
-    d.add_argument("--mu", type=_float_in("--mu", 0.0, MAX_ADVANCE_RATIO), default=0.0,
-                   help=f"advance ratio, 0..{MAX_ADVANCE_RATIO:g}")
+    _mu_option(d)
     d.add_argument("--disturb", type=_disturbance, required=True, metavar="NAME=VALUEUNIT,...",
                    help="the disturbance at azimuth 0: flap, lag, pitch in deg or rad, flap_rate, lag_rate, "
                         "pitch_rate in deg/s or rad/s, e.g. flap=2deg,lag=1deg,pitch=0.5deg")
     d.add_argument("--revs", type=_float_in("--revs", 0.0, 1e4, open_lo=True), default=10.0,
                    help="length of the motion, revolutions (default 10)")
-    d.add_argument("--condition", choices=CONDITIONS, default="propulsive",
-                   help="the trim (as certify; default propulsive)")
+    _condition_option(d, "the trim (as certify; default propulsive)")
     d.add_argument("--certify", action="store_true",
                    help="also certify the trim with the quadratic function (seconds in hover, tens of seconds in "
                         "forward flight) and draw its bound per hinge about the steady motion")
-    d.add_argument("--n-psi", type=_int_at_least("--n-psi", 1), default=36, help="azimuths of the certificate")
-    d.add_argument("--n-sphere", type=_int_at_least("--n-sphere", 0), default=1024,
-                   help="quasi-random directions per sphere of the certificate")
-    d.add_argument("--out", type=_table_path, default=None, help="the table: FILE.csv or FILE.json")
-    d.add_argument("--plot", type=_figure_path, default=None, metavar="FILE.png|FILE.svg",
-                   help="the figure: the hinge angles against revolutions, the steady motion and the bound")
+    _search_options(d, psi_help="azimuths of the certificate",
+                    sphere_help="quasi-random directions per sphere of the certificate")
+    _table_option(d)
+    _plot_option(d, "the figure: the hinge angles against revolutions, the steady motion and the bound")
 
+
+def _add_figures(sub) -> None:
     f = sub.add_parser("figures", help="regenerate the data (CSV) and PNGs of Figs 4-8 into a folder",
                        description="Regenerate the data (CSV) and pictures (PNG) of the paper's Figs 4-8.")
     f.add_argument("--out", type=Path, required=True, help="output folder (created if missing)")
     f.add_argument("--quick", action="store_true", help="coarse grids (seconds, for a smoke test)")
+
+
+def build_parser(prog: str = "python -m rotorlyap") -> argparse.ArgumentParser:
+    """The argument parser of ``python -m rotorlyap`` (and of the ``rotorlyap`` command, ``prog``)."""
+    parser = argparse.ArgumentParser(
+        prog=prog,
+        description="Technical stability of the Narkiewicz & Lucjanek (1989) rotor blade by "
+                    "Liapunov's direct method.",
+    )
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{" + ",".join(_COMMANDS) + "}")
+    for add in (_add_analyse, _add_certify, _add_verify, _add_sweep, _add_modes, _add_simulate, _add_figures):
+        add(sub)
     return parser
-
-
-def _verify_parser(sub) -> None:
-    v = sub.add_parser("verify", help="check a certificate file from nothing (rotorlyap.verify)",
-                       description="Rebuild the blade, the steady motion and the function of a certificate file "
-                                   "(written by 'certify --save') and check every claim again: the steady "
-                                   "motion against the equations, the level facts and condition (h) on the band "
-                                   "by the sound rule's final check. Exit status 0 if every claim holds, 1 if one "
-                                   "fails, 2 for a file that cannot be read as a certificate.")
-    v.add_argument("file", type=Path, metavar="FILE", help="the certificate file (JSON)")
-    v.add_argument("--prove", action="store_true",
-                   help="also prove a quadratic function's certificate by ball arithmetic (seconds in hover, "
-                        "minutes in forward flight; an error, exit status 1, for a designed function)")
 
 
 # ---------------------------------------------------------------------- shared helpers
@@ -646,13 +683,17 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
     """
     import numpy as np
 
+    from .analysis.certificate_file import FAMILY_WORDS
+    from .analysis.nonlinear_functions import FAMILIES
+
     p = cert.trim.params
     collective, cyc_c, cyc_s = cert.trim.controls_deg
     omega = p.rotor_speed
+    function = FAMILY_WORDS[cert.function] + (" (designed)" if cert.function in FAMILIES else "")
     return {
         "case": {**case, "mu": cert.mu, "condition": cert.condition},
         "certified": bool(cert.certified),
-        "kind": f"strict reading, sound rule, {_FUNCTION_NAMES[cert.function]} about the trim's steady "
+        "kind": f"strict reading, sound rule, {function} about the trim's steady "
                 "motion: a numerical certificate where certified",
         "function": cert.function,
         "candidates": [{"function": k.function, "certified": bool(k.certified), "bound": _sig(k.bound),
