@@ -1,7 +1,9 @@
 """What chapters 5 (hover, :mod:`rotorlyap.chapters.hover`) and 6 (forward flight,
-:mod:`rotorlyap.chapters.forward_flight`) share: the paper's three cases and their parameters,
-the labels of the two readings and of the state components, the norm scales balanced in
-energy, the reverse-flow boundary and the categories of the region maps with their legend.
+:mod:`rotorlyap.chapters.forward_flight`) share, with the inputs of the paper's figures that
+the command line (:mod:`rotorlyap.chapters.commands`) also uses: the paper's three cases and
+their parameters, Fig. 8's grids of advance ratios and the test-disturbance sets, the labels
+of the two readings and of the state components, the norm scales balanced in energy, the
+reverse-flow boundary and its mark, and the categories of the region maps with their legend.
 
 Every quantity computed in a reading carries that reading's label, :data:`READING_LABELS`:
 the strict reading (suprema and infima over whole spheres, the theorem as stated) is a

@@ -11,9 +11,9 @@ so that a notebook shows it only where it is glued). The data objects have a ``s
 (the text the chapter prints, rounded to the digits the computation determines) and a
 ``facts()`` (the numbers the chapter quotes, ``{glue name: value}``, for
 :func:`rotorlyap.chapters.export.glue_facts`). Every quantity computed in a reading carries
-that reading's label, :data:`rotorlyap.chapters.cases.READING_LABELS`. The cases, their
-parameters, the region maps' categories and legend shared with chapter 5 are in
-:mod:`rotorlyap.chapters.cases`.
+that reading's label, :data:`rotorlyap.chapters.cases.READING_LABELS`. The cases and their
+parameters, Fig. 8's grids, the test-disturbance sets and the region maps' categories, legend
+and reverse-flow mark are in :mod:`rotorlyap.chapters.cases`.
 
 Conventions (``.notes/BLADE_SPEC.md``): azimuth ``psi = 0`` with the blade pointing aft
 (over the tail), rotation counter-clockwise seen from above, so ``psi = 90 deg`` is the
