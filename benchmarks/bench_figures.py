@@ -25,24 +25,25 @@ def main() -> int:
 
     from rotorlyap.methods import sampling
     from rotorlyap.model import trim
-    from rotorlyap.chapters import paper
+    from rotorlyap.chapters import forward_flight, hover
+    from rotorlyap.chapters.cases import CASES, MU_GRID, MU_GRID_STRICT
 
     trim.hover_trim.cache_clear()
     sampling._sphere_points_cached.cache_clear()
     cg_sweep = np.round(np.linspace(0.21, 0.28, 8), 3)
     jobs = [
-        ("Fig 4  hover trim (8 C.G. + 3 cases)", lambda: paper.hover_trim_data(cg_sweep)),
-        ("Fig 5  W' in hover (8 C.G., both readings)", lambda: paper.hover_rate_data(cg_sweep)),
+        ("Fig 4  hover trim (8 C.G. + 3 cases)", lambda: hover.hover_trim_data(cg_sweep)),
+        ("Fig 5  W' in hover (8 C.G., both readings)", lambda: hover.hover_rate_data(cg_sweep)),
         ("Fig 6  W on spheres, mu = 0.15 (5 A, 72 psi)",
-         lambda: paper.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0, 4.0, 8.0), n_psi=72)),
+         lambda: forward_flight.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0, 4.0, 8.0), n_psi=72)),
         ("Fig 7  W' against azimuth (6 mu, 72 psi)",
-         lambda: paper.rate_azimuth_data("forward", (0.0, 0.05, 0.1, 0.15, 0.2, 0.25), n_psi=72)),
+         lambda: forward_flight.rate_azimuth_data("forward", (0.0, 0.05, 0.1, 0.15, 0.2, 0.25), n_psi=72)),
         ("Fig 8  regions, practical (3 C.G. x 12 mu x 72 psi)",
-         lambda: paper.regions_data(paper.CASES, paper.MU_GRID, reading="practical", n_psi=72)),
+         lambda: forward_flight.regions_data(CASES, MU_GRID, reading="practical", n_psi=72)),
         ("Fig 8  regions, strict (3 C.G. x 6 mu x 72 psi)",
-         lambda: paper.regions_data(paper.CASES, paper.MU_GRID_STRICT, reading="strict", n_psi=72, n_sphere=64)),
-        ("Fig 8  sensitivity (7 variants x 8 mu)", lambda: paper.sensitivity_data("forward")),
-        ("Fig 8  convergence (n_sphere, n_stations, n_psi)", lambda: paper.convergence_data()),
+         lambda: forward_flight.regions_data(CASES, MU_GRID_STRICT, reading="strict", n_psi=72, n_sphere=64)),
+        ("Fig 8  sensitivity (7 variants x 8 mu)", lambda: forward_flight.sensitivity_data("forward")),
+        ("Fig 8  convergence (n_sphere, n_stations, n_psi)", lambda: forward_flight.convergence_data()),
     ]
     total = 0.0
     print(f"{'data':55s} {'time (s)':>9s} {'evaluations':>12s} {'eval/s':>10s}")

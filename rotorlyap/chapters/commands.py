@@ -1,10 +1,10 @@
 """Regenerate the data (CSV) and pictures (PNG) of the paper's Figs 4-8 into a folder.
 
 Used by ``python -m rotorlyap figures --out DIR``. Each figure calls the same data and
-drawing functions as the book (:mod:`rotorlyap.chapters.paper`), laid out and checked for
-legibility there, so the files match the book's figures (with coarser grids under
-``quick=True``); Fig 8 shows one reading per file, its cases two to a row with the category
-legend.
+drawing functions as the book (:mod:`rotorlyap.chapters.hover` and
+:mod:`rotorlyap.chapters.forward_flight`), laid out and checked for legibility there, so the
+files match the book's figures (with coarser grids under ``quick=True``); Fig 8 shows one
+reading per file, its cases two to a row with the category legend.
 """
 
 from __future__ import annotations
@@ -39,39 +39,40 @@ def regenerate_figures(out: Path, *, quick: bool = False,
 
     matplotlib.use("Agg")
 
-    from . import paper
+    from . import forward_flight, hover
+    from .cases import CASES, MU_GRID, MU_GRID_STRICT
     from .export import figure_csv
 
     out = Path(out)
     n_psi = 12 if quick else 72
     cg_sweep = np.linspace(0.21, 0.28, 3 if quick else 8)
-    mu_grid = (0.0, 0.15, 0.25) if quick else paper.MU_GRID
-    mu_strict = (0.0, 0.25) if quick else paper.MU_GRID_STRICT
+    mu_grid = (0.0, 0.15, 0.25) if quick else MU_GRID
+    mu_strict = (0.0, 0.25) if quick else MU_GRID_STRICT
     mu7 = (0.0, 0.15, 0.25) if quick else (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
-    cases = ("forward",) if quick else paper.CASES
+    cases = ("forward",) if quick else CASES
 
     def fig4():
-        data = paper.hover_trim_data(cg_sweep)
-        return {"fig4_hover_trim": (data, paper.figure_hover_trim(data))}
+        data = hover.hover_trim_data(cg_sweep)
+        return {"fig4_hover_trim": (data, hover.figure_hover_trim(data))}
 
     def fig5():
-        data = paper.hover_rate_data(cg_sweep)
-        return {"fig5_hover_rate": (data, paper.figure_hover_rate(data))}
+        data = hover.hover_rate_data(cg_sweep)
+        return {"fig5_hover_rate": (data, hover.figure_hover_rate(data))}
 
     def fig6():
-        data = paper.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0, 4.0, 8.0), n_psi=n_psi)
-        return {"fig6_w_spheres": (data, paper.figure_w_spheres(data))}
+        data = forward_flight.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0, 4.0, 8.0), n_psi=n_psi)
+        return {"fig6_w_spheres": (data, forward_flight.figure_w_spheres(data))}
 
     def fig7():
-        data = paper.rate_azimuth_data("forward", mu7, n_psi=n_psi)
-        return {"fig7_rate_azimuth": (data, paper.figure_rate_azimuth(data))}
+        data = forward_flight.rate_azimuth_data("forward", mu7, n_psi=n_psi)
+        return {"fig7_rate_azimuth": (data, forward_flight.figure_rate_azimuth(data))}
 
     def fig8():
         made = {}
         for reading, mus in (("practical", mu_grid), ("strict", mu_strict)):
-            data = paper.regions_data(cases, mus, reading=reading, n_psi=n_psi)
+            data = forward_flight.regions_data(cases, mus, reading=reading, n_psi=n_psi)
             # the cases two to a row, with the category legend (in the spare cell, or below)
-            made[f"fig8_regions_{reading}"] = (data, paper.figure_regions_polar(data))
+            made[f"fig8_regions_{reading}"] = (data, forward_flight.figure_regions_polar(data))
         return made
 
     steps = [("Fig 4: hover trim", fig4), ("Fig 5: W' in hover against C.G.", fig5),

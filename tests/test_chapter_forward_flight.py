@@ -1,8 +1,9 @@
-"""Data and drawing functions of the reproduction figures (Figs 4-8), on coarse grids.
+"""Data and drawing functions of chapter 6, forward flight (the paper's Figs 6-8,
+:mod:`rotorlyap.chapters.forward_flight`), on coarse grids.
 
 Each test names the fact it checks. The grids are far coarser than the book's; what is
 checked is the structure of the data, the readings' labels and the physical facts the
-chapters rest on.
+chapter rests on.
 """
 
 import matplotlib
@@ -16,72 +17,15 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 
-from rotorlyap.analysis.functions import energy_function  # noqa: E402
-from rotorlyap.chapters import paper  # noqa: E402
+from rotorlyap.chapters import cases, forward_flight  # noqa: E402
 from rotorlyap.chapters.export import figure_csv  # noqa: E402
 from rotorlyap.chapters.style import MIN_TEXT_PX, check_legible  # noqa: E402
-from rotorlyap.conventions import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES  # noqa: E402
-
-
-@pytest.fixture(scope="module")
-def trim():
-    return paper.hover_trim_data(cg_values=(0.22, 0.25))
-
-
-def test_fig4_thrust_equals_the_weight_for_every_trim(trim):
-    assert np.allclose(trim.thrust, trim.weight, rtol=0, atol=1e-6)
-    assert np.allclose(trim.case_thrust, trim.weight, rtol=0, atol=1e-6)
-    assert trim.weight == pytest.approx(6400.0 * 9.80665)
-
-
-def test_fig4_collective_decreases_as_the_cg_moves_aft_and_the_pitch_angle_stays(trim):
-    assert trim.case_names == ("forward", "neutral", "backward")
-    assert np.all(np.diff(trim.case_collective) < 0)
-    assert np.ptp(trim.case_equilibrium[:, 2]) < np.radians(0.1)
-    assert trim.equilibrium.shape == (2, 3) and trim.case_equilibrium.shape == (3, 3)
-
-
-def test_fig4_draws_and_writes_its_csv(trim, tmp_path):
-    fig, axes = plt.subplots(1, 2)
-    paper.plot_hover_trim(trim, axes)
-    plt.close(fig)
-    out = figure_csv(trim, tmp_path / "trim.csv")
-    assert out.read_text().startswith("field,")
-
-
-@pytest.fixture(scope="module")
-def rate():
-    """Fig. 5 on the three cases and one C.G. behind them that linear theory finds unstable."""
-    return paper.hover_rate_data((0.215, 0.235, 0.255, 0.265), n_sphere=64, n_refine=4, n_fraction=512, n_grid=11)
-
-
-def test_fig5_strict_positive_practical_zero_and_labelled(rate):
-    d = rate
-    assert d.strict_label == "strict (numerical certificate)"
-    assert d.practical_label == "practical (indicator, not a certificate)"
-    # the caution on the real model: W' > 0 on the sphere at every C.G., found by the search
-    assert np.all(d.strict_max > 50.0)
-    assert np.all(d.strict_positive_fraction > 0.05)
-    # the argmax is mostly a pitch displacement with a flap rate
-    assert np.all(np.abs(d.strict_argmax[:, 2]) > 0.8) and np.all(np.abs(d.strict_argmax[:, 3]) > 0.1)
-    # and its work is the aerodynamic flap moment on the flap rate
-    assert np.all(d.terms_aero[:, 0] > 0.9 * d.strict_max)
-    # practical: pure displacements do no work, pure rates are damped
-    assert np.all(d.practical_max <= 1e-9)
-    disp = np.abs(d.test_disturbances[:, :3]).max(axis=1) > 0.5
-    assert np.allclose(d.practical_dW[:, disp], 0.0, atol=1e-9)
-    assert np.all(d.practical_dW[:, ~disp] < 0.0)
-    # linear theory: the three cases stable, 0.01 c behind the backward one unstable
-    assert np.all(d.eig_max_real[:3] < 0) and d.eig_max_real[3] > 0
-    assert d.slice_dW.shape == (11, 11)
-    fig, axes = plt.subplots(2, 2)
-    paper.plot_hover_rate(d, axes.ravel())
-    plt.close(fig)
+from rotorlyap.conventions import DEFAULT_SCALES  # noqa: E402
 
 
 @pytest.fixture(scope="module")
 def wsph():
-    return paper.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0), n_psi=6, n_sphere=16)
+    return forward_flight.w_spheres_data("forward", 0.15, (0.5, 1.0, 2.0), n_psi=6, n_sphere=16)
 
 
 def test_fig6_energy_does_not_depend_on_azimuth_and_grows_as_A_squared(wsph):
@@ -94,13 +38,13 @@ def test_fig6_energy_does_not_depend_on_azimuth_and_grows_as_A_squared(wsph):
     assert np.all(d.strict_inf <= d.practical_min + 1e-12)
     assert np.all(d.strict_sup >= d.practical_max - 1e-12)
     fig, axes = plt.subplots(1, 2)
-    paper.plot_w_spheres(d, axes)
+    forward_flight.plot_w_spheres(d, axes)
     plt.close(fig)
 
 
 @pytest.fixture(scope="module")
 def rate7():
-    return paper.rate_azimuth_data("forward", (0.0, 0.15), n_psi=8, n_sphere=16)
+    return forward_flight.rate_azimuth_data("forward", (0.0, 0.15), n_psi=8, n_sphere=16)
 
 
 def test_fig7_shapes_hover_zero_and_forward_flight_positive(rate7):
@@ -113,13 +57,13 @@ def test_fig7_shapes_hover_zero_and_forward_flight_positive(rate7):
     assert np.all(d.practical_max[1] >= 0) and (d.practical_max[1] > 1.0).sum() >= 5
     assert np.all(d.strict_max >= d.practical_max - 1e-9)
     fig, axes = plt.subplots(1, 2)
-    paper.plot_rate_azimuth(d, axes)
+    forward_flight.plot_rate_azimuth(d, axes)
     plt.close(fig)
 
 
 @pytest.fixture(scope="module")
 def regions():
-    return paper.regions_data(("forward",), (0.0, 0.1), reading="practical", n_psi=8)
+    return forward_flight.regions_data(("forward",), (0.0, 0.1), reading="practical", n_psi=8)
 
 
 def test_fig8_practical_reading_is_labelled_and_hover_is_indicated_stable(regions):
@@ -132,7 +76,7 @@ def test_fig8_practical_reading_is_labelled_and_hover_is_indicated_stable(region
 
 
 def test_fig8_strict_reading_is_labelled_and_certifies_nothing_in_hover():
-    reg = paper.regions_data(("forward",), (0.0,), reading="strict", n_psi=4, n_sphere=64)
+    reg = forward_flight.regions_data(("forward",), (0.0,), reading="strict", n_psi=4, n_sphere=64)
     assert reg.label == "strict (numerical certificate)"
     assert not reg.stable.any()
     assert np.all(reg.A_used == 0.0)
@@ -141,7 +85,7 @@ def test_fig8_strict_reading_is_labelled_and_certifies_nothing_in_hover():
 def test_fig8_polar_plot_puts_the_tail_at_psi_0_and_the_advancing_side_at_psi_90(regions):
     fig = plt.figure()
     ax = fig.add_subplot(projection="polar")
-    paper.plot_regions_polar(regions, ax, 0)
+    forward_flight.plot_regions_polar(regions, ax, 0)
     # psi = 0 points down (the tail), psi increases counter-clockwise: psi = 90 deg is on the right
     assert np.cos(ax.get_theta_offset()) == pytest.approx(0.0, abs=1e-12)
     assert np.sin(ax.get_theta_offset()) == pytest.approx(-1.0)
@@ -158,63 +102,37 @@ def test_fig8_polar_plot_puts_the_tail_at_psi_0_and_the_advancing_side_at_psi_90
     plt.close(fig)
 
 
-def test_fig8_reverse_flow_reaches_the_root_only_on_the_retreating_side():
-    p = paper.case_params("forward")
-    psi = np.radians([90.0, 270.0])
-    b = paper.reverse_flow_boundary(p, psi)
-    assert np.isinf(b[0])
-    assert b[1] == pytest.approx(p.root_r_over_R)
-
-
 def test_fig8_plane_plot_draws(regions):
     fig, ax = plt.subplots()
-    paper.plot_regions_plane(regions, ax, 0)
+    forward_flight.plot_regions_plane(regions, ax, 0)
     plt.close(fig)
 
 
-def test_balanced_scales_give_every_axis_the_same_energy():
-    from rotorlyap import Blade
-
-    p = paper.case_params("forward")
-    a = paper.balanced_scales(p)
-    fun = energy_function(Blade(p, 0.0))
-    w = fun.W(0.0, np.eye(6) * a)
-    assert np.ptp(w) / w.mean() < 0.05
-    assert np.all(DEFAULT_SCALES > 0)
-
-
 def test_sensitivity_variants_keep_their_labels_and_directions():
-    d = paper.sensitivity_data("forward", (0.0, 0.1), {"default": {}, "flap-lag": dict(
-        test_disturbances=paper.FLAP_LAG_TEST_DISTURBANCES)}, n_psi=4)
+    d = forward_flight.sensitivity_data("forward", (0.0, 0.1), {"default": {}, "flap-lag": dict(
+        test_disturbances=cases.FLAP_LAG_TEST_DISTURBANCES)}, n_psi=4)
     assert d.names == ("default", "flap-lag")
     assert d.n_tests == (12, 8)
     assert all(r.reading == "practical" for r in d.regions)
     assert len(d.first_unstable()) == 2
     fig, axes = plt.subplots(1, 3)
-    paper.plot_sensitivity(d, axes)
+    forward_flight.plot_sensitivity(d, axes)
     plt.close(fig)
 
 
 def test_practical_threshold_is_below_the_first_forward_flight_grid_point():
-    mu = paper.practical_threshold_mu("forward", mu_lo=1e-4, n_psi=8, n_bisect=2)
-    assert 0 < mu <= paper.MU_GRID[1]
-
-
-def test_paper_test_disturbances_are_the_twelve_signed_axes():
-    assert PAPER_TEST_DISTURBANCES.shape == (12, 6)
-    assert paper.AXES_AND_DIAGONALS.shape == (72, 6)
-    assert paper.FLAP_LAG_TEST_DISTURBANCES.shape == (8, 6)
-    assert np.all(paper.FLAP_LAG_TEST_DISTURBANCES[:, [2, 5]] == 0)
+    mu = forward_flight.practical_threshold_mu("forward", mu_lo=1e-4, n_psi=8, n_bisect=2)
+    assert 0 < mu <= cases.MU_GRID[1]
 
 
 def test_markdown_table_escapes_pipes():
-    t = paper.markdown_table(("a", "b"), [("x|y", "z")])
+    t = forward_flight.markdown_table(("a", "b"), [("x|y", "z")])
     assert t.splitlines()[0] == "| a | b |"
     assert "x\\|y" in t
 
 
 # --------------------------------------------------------------------------------------
-# The chapters' printed summaries and glued facts (chapters 5 and 6)
+# The chapter's printed summaries and glued facts (chapter 6)
 # --------------------------------------------------------------------------------------
 
 
@@ -225,157 +143,10 @@ def _closed_figure(fig, size, n_axes):
     assert len(fig.axes) == n_axes
 
 
-def test_hover_sweep_is_the_three_cases_and_0_01_c_steps_to_0_02_c_beyond_them():
-    sweep = paper.hover_sweep()
-    assert np.allclose(sweep.cg, np.arange(0.195, 0.2751, 0.01))
-    assert all(np.isclose(sweep.cg, c).any() for c in sweep.case_cg)
-    assert sweep.facts() == {"ch5_cg_forward": 0.215, "ch5_cg_neutral": 0.235, "ch5_cg_backward": 0.255,
-                             "ch5_sweep_lo": 0.195, "ch5_sweep_hi": 0.275}
-    lines = sweep.summary().splitlines()
-    assert lines[0] == "C.G. of the cases (c): forward 0.215, neutral 0.235, backward 0.255"
-    assert lines[-1].startswith("scales a_i") and not any("strict" in ln or "practical" in ln for ln in lines)
-
-
-def test_fig4_facts_quote_a_collective_falling_as_the_cg_moves_aft_at_equal_angles(trim):
-    f = trim.facts()
-    assert f["ch5_col_slope"] < 0
-    assert f["ch5_col_forward"] > f["ch5_col_neutral"] > f["ch5_col_backward"]
-    assert f["ch5_eq_spread"] < 0.5
-    assert f["ch5_weight"] == pytest.approx(62.76)
-    assert {f"ch5_{q}_{c}" for q in ("col", "beta", "zeta", "theta") for c in paper.CASES} <= set(f)
-    assert all(isinstance(v, float) for v in f.values())  # plain floats: glued as their repr
-
-
-def test_fig4_summary_confirms_thrust_equals_weight_for_every_case(trim):
-    lines = trim.summary().splitlines()
-    assert len(lines) == 8
-    assert all(line.endswith("below 1e-6") for line in lines[1:4])
-    assert "|thrust - weight| < 1e-6 N for every trim: True" in lines[6]
-
-
-def test_fig4_figure_is_the_books_two_panels(trim):
-    _closed_figure(paper.figure_hover_trim(trim), (9.0, 4.2), 2)
-
-
-@pytest.mark.slow
-def test_trim_limit_lies_between_a_trimmable_and_an_untrimmable_cg():
-    lim = paper.trim_limit_data(0.28, 0.30, tol=1e-2)
-    assert 0.28 <= lim.cg_limit < lim.cg_untrimmable <= 0.30
-    assert lim.cg_untrimmable - lim.cg_limit <= 1e-2
-    assert lim.facts() == {"ch5_trim_limit": round(lim.cg_limit, 3)}
-    assert lim.summary().startswith("hover trim with positive collective exists up to a C.G. of 0.2")
-
-
-def test_trim_limit_needs_an_untrimmable_upper_end():
-    with pytest.raises(ValueError, match="untrimmable"):
-        paper.trim_limit_data(0.215, 0.225, tol=1e-2)
-
-
-@pytest.fixture(scope="module")
-def modes():
-    return paper.hover_modes_data()
-
-
-def test_hover_modes_all_cases_stable_and_the_forward_least_damped_a_slow_lag_pair(modes):
-    for case in paper.CASES:
-        assert modes.least_damped(case).growth_rate < 0
-    fwd = modes.least_damped("forward")
-    assert fwd.oscillatory and fwd.dominant_hinge == "lag" and fwd.frequency < 0.2
-    assert not modes.least_damped("neutral").oscillatory and not modes.least_damped("backward").oscillatory
-    f = modes.facts()
-    assert f["ch5_re_forward"] < f["ch5_re_neutral"] < f["ch5_re_backward"] < 0
-    assert f["ch5_lag_share_forward"] < 0.5 and f["ch5_tau_backward"] > 10
-
-
-def test_hover_pitch_mode_is_the_fastest_mode_and_almost_pure_pitch(modes):
-    for case, ms in zip(modes.case_names, modes.modes):
-        pm = modes.pitch(case)
-        assert pm.frequency == max(m.frequency for m in ms)
-        assert pm.shape[2] == 1.0 and max(pm.shape[:2]) < 0.1
-
-
-def test_backward_cg_flutters_without_the_aerodynamic_pitch_damping(modes):
-    assert modes.pitch("backward", pitch_damping=False).growth_rate > 0
-    assert modes.pitch("forward", pitch_damping=False).growth_rate < 0
-    assert modes.facts()["ch5_pitch_re0_backward"] > 0
-
-
-def test_hover_modes_summary_lists_each_mode_once_least_damped_first(modes):
-    for ms in modes.modes:
-        rates = [m.growth_rate for m in ms]
-        assert rates == sorted(rates, reverse=True)
-    rows = modes.summary().splitlines()[1:1 + sum(len(ms) for ms in modes.modes)]
-    assert [r.split()[0] for r in rows] == ["forward"] * 3 + ["neutral"] * 4 + ["backward"] * 4
-    assert rows[0].split()[2:5] == ["-0.145", "+-", "0.086j"]
-
-
-@pytest.fixture(scope="module")
-def readings():
-    return paper.hover_readings_data(("forward",), n_psi=4)
-
-
-def test_hover_readings_strict_certifies_nothing_practical_every_azimuth(readings):
-    (s,), (q,) = readings.strict, readings.practical
-    assert s.reading == "strict" and q.reading == "practical"
-    assert not s.stable.any() and q.stable.all()
-    f = readings.facts()
-    assert f["ch5_prac_stable_forward"] == 4 and f["ch5_step3_forward"] > 50
-    assert 0 < f["ch5_prac_lambda0"] < 1
-    assert readings.summary().splitlines()[1].startswith("  strict (numerical certificate): nothing certified")
-
-
-def test_search_check_the_engines_default_search_finds_the_refined_maximum(readings, rate):
-    check = paper.search_check(readings, rate)
-    assert check.case_names == ("forward",)
-    assert check.gap < 1.0
-    assert check.facts() == {"ch5_search_gap": round(check.gap, 2)}
-    assert check.summary().splitlines()[1].startswith("forward   ") and "refined (Fig. 5)" in check.summary()
-
-
-def test_fig5_facts_quote_a_flat_strict_maximum_and_the_forward_maximiser(rate):
-    f = rate.facts()
-    assert abs(f["ch5_smax_change"]) < 2
-    assert f["ch5_smax_forward"] == round(float(rate.strict_max[0]), 1)
-    assert f["ch5_pmax"] == "< 1e-10"  # exactly 0 J/rad to round-off, as text
-    assert f["ch5_arg_theta"] > 0.8 and f["ch5_aero_flap"] > 0.9 * f["ch5_smax_forward"]
-    assert f["ch5_cg_most_stable"] == 0.215 and f["ch5_eig_hi"] > 0 > f["ch5_eig_lo"]
-    lines = rate.summary().splitlines()
-    assert len(lines) == 11 and lines[7].startswith("argmax x_i/a_i at 0.215 c:")
-
-
-def test_fig5_case_index_needs_the_case_in_the_sweep(rate):
-    assert rate.case_index("backward") == 2
-    short = dataclasses.replace(rate, cg=rate.cg + 0.001)
-    with pytest.raises(ValueError, match="does not contain"):
-        short.case_index("forward")
-
-
-def test_fig5_figure_is_the_books_four_panels_and_a_colour_bar(rate):
-    _closed_figure(paper.figure_hover_rate(rate), (9.0, 8.8), 5)
-
-
-@pytest.mark.slow
-def test_linear_divergence_sets_in_just_behind_the_backward_case_as_a_real_root(rate):
-    div = paper.hover_divergence_data(rate, n_psi=4, xtol=1e-3)
-    assert 0.255 < div.cg_cross < 0.265
-    assert not div.cross_mode.oscillatory and abs(div.cross_mode.growth_rate) < 1e-2
-    assert np.all(np.diff(div.pitch_re) > 0)  # the pitch mode loses damping monotonically aft
-    f = div.facts()
-    assert f["ch5_n_div"] == 1 and f["ch5_n_div_prac_min"] == 4  # the practical reading still says stable
-    assert 0 < f["ch5_div_behind_backward"] < 0.01
-    assert div.summary().splitlines()[0].endswith("(there: a real root, frequency 0.000/rev)")
-
-
-def test_linear_divergence_needs_a_sweep_that_turns_unstable(rate):
-    stable = dataclasses.replace(rate, eig_max_real=-np.abs(rate.eig_max_real))
-    with pytest.raises(ValueError, match="turn unstable"):
-        paper.hover_divergence_data(stable)
-
-
 def test_unbalanced_loads_vanish_in_hover_and_not_in_forward_flight():
-    hover = paper.unbalanced_loads_data("forward", 0.0, psi_step_deg=90.0)
+    hover = forward_flight.unbalanced_loads_data("forward", 0.0, psi_step_deg=90.0)
     assert np.allclose(hover.delta_q, 0.0, atol=1e-6)
-    loads = paper.unbalanced_loads_data("forward", 0.15, psi_step_deg=45.0)
+    loads = forward_flight.unbalanced_loads_data("forward", 0.15, psi_step_deg=45.0)
     f = loads.facts()
     assert set(f) == {f"ch6_dq_{h}_{e}" for h in ("flap", "lag", "pitch") for e in ("min", "max")}
     assert f["ch6_dq_flap_max"] > 1e5 > f["ch6_dq_flap_min"]
@@ -395,7 +166,7 @@ def test_fig6_pitch_displacement_is_the_axis_with_the_least_energy(wsph):
 def test_threshold_summary_says_where_the_indicator_fails_already_and_where_it_passes():
     """A threshold equal to the smallest advance ratio tried is a failure there, not "stable up
     to" it; the indicator's verdict is "passes", never "stable"."""
-    thr = paper.ThresholdData(cg="forward", models=("glauert", "drees"), test_sets=("12 axes",),
+    thr = forward_flight.ThresholdData(cg="forward", models=("glauert", "drees"), test_sets=("12 axes",),
                               threshold=np.array([[1e-7], [0.0015]]), speed_model="drees",
                               hover_lambda0=np.array([0.04]), speed=np.array([0.33]), mu_lo=1e-7)
     lines = thr.summary().splitlines()
@@ -406,20 +177,14 @@ def test_threshold_summary_says_where_the_indicator_fails_already_and_where_it_p
 
 def test_unbalanced_load_facts_keep_three_significant_figures():
     """A moment below 10 N m is glued with its decimal (9.3, not 9.0)."""
-    data = paper.UnbalancedLoadsData.__new__(paper.UnbalancedLoadsData)
+    data = forward_flight.UnbalancedLoadsData.__new__(forward_flight.UnbalancedLoadsData)
     object.__setattr__(data, "delta_q", np.array([[1.2345e5, -3.3, 9.27], [2.5e5, 2.0, 104.6]]))
     f = data.facts()
     assert f["ch6_dq_pitch_min"] == 9.27 and f["ch6_dq_pitch_max"] == 105.0 and f["ch6_dq_flap_max"] == 2.5e5
 
 
 def test_fig6_figure_is_the_books_two_panels(wsph):
-    _closed_figure(paper.figure_w_spheres(wsph), (8.6, 6.6), 2)
-
-
-def test_disturbance_names_name_the_twelve_signed_axes():
-    names = paper.disturbance_names(PAPER_TEST_DISTURBANCES)
-    assert names[:6] == ("+\\beta", "+\\zeta", "+\\theta", "+\\beta'", "+\\zeta'", "+\\theta'")
-    assert names[6:] == tuple("-" + n[1:] for n in names[:6])
+    _closed_figure(forward_flight.figure_w_spheres(wsph), (8.6, 6.6), 2)
 
 
 def test_fig7_the_largest_axis_maximum_is_the_practical_maximum(rate7):
@@ -432,12 +197,12 @@ def test_fig7_the_largest_axis_maximum_is_the_practical_maximum(rate7):
 
 
 def test_fig7_figure_is_the_books_two_panels(rate7):
-    _closed_figure(paper.figure_rate_azimuth(rate7), (9.0, 4.2), 2)
+    _closed_figure(forward_flight.figure_rate_azimuth(rate7), (9.0, 4.2), 2)
 
 
 @pytest.fixture(scope="module")
 def maps():
-    return paper.region_maps(("forward",), (0.0, 0.0125, 0.1), (0.0, 0.25), n_psi=8, n_sphere_strict=16)
+    return forward_flight.region_maps(("forward",), (0.0, 0.0125, 0.1), (0.0, 0.25), n_psi=8, n_sphere_strict=16)
 
 
 def test_fig8_facts_practical_hover_stable_forward_flight_not_strict_nothing(maps):
@@ -445,7 +210,7 @@ def test_fig8_facts_practical_hover_stable_forward_flight_not_strict_nothing(map
     assert f["ch6_p_hover_stable"] == f["ch6_p_n_hover"] == 8
     assert f["ch6_p_fw_stable"] == 0 and f["ch6_s_stable"] == 0 and f["ch6_s_cells"] == 16
     assert f["ch6_p_mu1"] == 0.0125 and f["ch6_p_mu_mid"] == 0.1
-    assert 0 <= f["ch6_p_adv_mid"] <= 1 and f["ch6_root"] == round(paper.case_params("forward").root_r_over_R, 3)
+    assert 0 <= f["ch6_p_adv_mid"] <= 1 and f["ch6_root"] == round(cases.case_params("forward").root_r_over_R, 3)
     text = maps.summary()
     assert "practical, W' > 0 on the sphere: the same map for every C.G.: True" in text
     assert text.splitlines()[0] == "practical (indicator, not a certificate)"
@@ -460,11 +225,11 @@ def test_fig8_export_has_one_row_per_case_mu_and_azimuth(maps, tmp_path):
 
 def test_fig8_figures_have_a_panel_per_reading_and_case_and_the_legend(maps):
     # one column per reading, one row per case (here one), the legend below: 0.75 in
-    for fig, size in ((paper.figure_regions_polar(maps.practical, maps.strict), (8.6, 3.75 + 0.75)),
-                      (paper.figure_regions_plane(maps.practical, maps.strict), (8.6, 2.75 + 0.75))):
+    for fig, size in ((forward_flight.figure_regions_polar(maps.practical, maps.strict), (8.6, 3.75 + 0.75)),
+                      (forward_flight.figure_regions_plane(maps.practical, maps.strict), (8.6, 2.75 + 0.75))):
         _closed_figure(fig, size, 2)
         [legend] = fig.legends
-        assert len(legend.get_texts()) == len(paper.CATEGORY_NAMES) + 1
+        assert len(legend.get_texts()) == len(cases.CATEGORY_NAMES) + 1
         left, right = fig.axes
         assert left.get_position().x0 < right.get_position().x0  # practical left, strict right
         assert maps.practical.label in left.get_title() and maps.strict.label in right.get_title()
@@ -474,7 +239,7 @@ def test_fig8_one_reading_puts_its_cases_two_to_a_row_and_the_legend_in_the_spar
     three = dataclasses.replace(regions, cases=("forward", "neutral", "backward"),
                                 **{k: np.repeat(getattr(regions, k), 3, axis=0)
                                    for k in ("stable", "category", "max_dW", "A_used", "lambda0")})
-    fig = paper.figure_regions_polar(three)
+    fig = forward_flight.figure_regions_polar(three)
     _closed_figure(fig, (8.6, 2 * 3.75), 4)  # three discs and the spare cell
     assert not fig.axes[3].axison and len(fig.legends) == 1
     assert check_legible(fig) >= MIN_TEXT_PX
@@ -487,9 +252,9 @@ def test_fig8_every_verdict_has_its_hatch_in_the_map_and_the_legend(regions):
 
     from rotorlyap.chapters.style import CATEGORY_HATCHES
 
-    handles = paper.category_legend_handles()
+    handles = cases.category_legend_handles()
     assert [h.get_hatch() or "" for h in handles[:-1]] == list(CATEGORY_HATCHES)
-    assert handles[-1].get_hatch() == paper.REVERSE_FLOW_HATCH not in CATEGORY_HATCHES
+    assert handles[-1].get_hatch() == cases.REVERSE_FLOW_HATCH not in CATEGORY_HATCHES
     reg = dataclasses.replace(regions, mu_values=np.array([0.0, 0.2]))  # reverse flow reaches the root
     cat = reg.category.copy()
     cat[0, 1, :4] = [0, 1, 2, 3]
@@ -497,17 +262,17 @@ def test_fig8_every_verdict_has_its_hatch_in_the_map_and_the_legend(regions):
     for projection in ("polar", None):
         fig = plt.figure()
         ax = fig.add_subplot(projection=projection)
-        (paper.plot_regions_polar if projection else paper.plot_regions_plane)(reg, ax, 0)
+        (forward_flight.plot_regions_polar if projection else forward_flight.plot_regions_plane)(reg, ax, 0)
         hatched = {c.get_hatch(): len(c.get_paths()) for c in ax.collections
                    if isinstance(c, PolyCollection) and c.get_hatch()}
         for k, h in enumerate(CATEGORY_HATCHES):
             assert hatched.get(h, 0) == (int((cat[0] == k).sum()) if h else 0), (projection, h)
-        assert hatched.get(paper.REVERSE_FLOW_HATCH, 0) >= 1
+        assert hatched.get(cases.REVERSE_FLOW_HATCH, 0) >= 1
         plt.close(fig)
 
 
 def test_practical_reading_calls_a_fluttering_blade_stable_in_hover():
-    check = paper.hover_flutter_check(("forward",), "backward", n_psi=4)
+    check = forward_flight.hover_flutter_check(("forward",), "backward", n_psi=4)
     assert check.growth_rate[0] < 0 < check.flutter_growth_rate
     assert check.flutter_stable == 4
     assert check.facts() == {"ch6_flut_re": f"{check.flutter_growth_rate:+.3f}", "ch6_flut_stable": 4}
@@ -515,11 +280,11 @@ def test_practical_reading_calls_a_fluttering_blade_stable_in_hover():
 
 @pytest.mark.slow
 def test_drees_inflow_has_a_practical_threshold_above_glauerts():
-    thr = paper.practical_threshold_data("forward", ("glauert", "drees"), ("12 axes",), n_psi=4, n_bisect=2)
+    thr = forward_flight.practical_threshold_data("forward", ("glauert", "drees"), ("12 axes",), n_psi=4, n_bisect=2)
     assert thr.threshold_of("glauert", "12 axes") == 1e-7  # any forward speed switches Glauert's gradient on
     assert thr.threshold_of("drees", "12 axes") > 1e-5
     assert set(thr.facts()) == {"ch6_thr_dr_12", "ch6_lam_dr_12", "ch6_v_dr_12"}
-    p = paper.case_params("forward")
+    p = cases.case_params("forward")
     assert thr.speed[0] == pytest.approx(thr.threshold_of("drees", "12 axes") * p.rotor_speed * p.radius)
     assert len(thr.summary().splitlines()) == 3
 
@@ -539,7 +304,7 @@ def _synthetic_sensitivity(regions):
     a4 = dataclasses.replace(base, stable=stable, A_used=np.array([[4.0, 4.0, 0.0]]))
     names = ("default: 12 axes, A = 1", "A = 0.5", "A = 2", "A = 4", "energy-balanced a_i",
              "axes + diagonals (72)", "flap and lag axes only (8)")
-    return paper.SensitivityData(names=names, regions=tuple(a4 if n == "A = 4" else base for n in names),
+    return forward_flight.SensitivityData(names=names, regions=tuple(a4 if n == "A = 4" else base for n in names),
                                  scales=tuple(np.array(DEFAULT_SCALES) for _ in names), n_tests=(12,) * 7)
 
 
@@ -555,11 +320,11 @@ def test_sensitivity_facts_find_the_stable_cells_of_the_large_bound(regions):
     assert lines[-2].endswith("cell by cell: True")
     cols = dict(sens.export())
     assert list(cols)[:2] == ["v0_category", "v0_A_used"] and list(cols)[-2:] == ["mu", "psi_deg"]
-    _closed_figure(paper.figure_sensitivity(sens), (8.6, 10.4), 8)
+    _closed_figure(forward_flight.figure_sensitivity(sens), (8.6, 10.4), 8)
 
 
 def _synthetic_convergence():
-    return paper.ConvergenceData(
+    return forward_flight.ConvergenceData(
         n_sphere=np.array([0, 64, 256]), sup_dW_hover=np.array([[90.0, 92.0, 92.001]] * 3),
         n_stations=np.array([6, 12, 24]), collective=np.array([[0.15, 0.1501, 0.15]] * 3),
         sup_dW_stations=np.array([92.5, 92.0, 92.0]), practical_rate_stations=np.array([1125.2, 1125.1, 1125.1]),
@@ -580,18 +345,18 @@ def test_convergence_facts_state_deviations_as_the_decade_above_them():
 
 
 def test_convergence_figure_is_the_books_three_panels():
-    _closed_figure(paper.figure_convergence(_synthetic_convergence()), (9.0, 7.4), 3)
+    _closed_figure(forward_flight.figure_convergence(_synthetic_convergence()), (9.0, 7.4), 3)
 
 
 def test_claims_table_has_a_row_per_claim_and_both_readings(wsph, rate7, maps, regions):
-    flutter = paper.HoverFlutterCheck(case_names=paper.CASES, growth_rate=np.array([-0.145, -0.097, -0.007]),
+    flutter = forward_flight.HoverFlutterCheck(case_names=cases.CASES, growth_rate=np.array([-0.145, -0.097, -0.007]),
                                       flutter_case="backward", flutter_growth_rate=0.116, flutter_stable=72, n_psi=72)
-    threshold = paper.ThresholdData(cg="forward", models=("glauert", "drees"), test_sets=("12 axes",),
+    threshold = forward_flight.ThresholdData(cg="forward", models=("glauert", "drees"), test_sets=("12 axes",),
                                     threshold=np.array([[1e-7], [0.0015]]), speed_model="drees",
                                     hover_lambda0=np.array([0.039]), speed=np.array([0.33]))
     sens = _synthetic_sensitivity(regions)
-    table = paper.claims_table(_synthetic_convergence(), wsph, rate7, maps, flutter, threshold, sens)
-    assert len(table.rows) == 7 and all(len(r) == len(paper.CLAIMS_HEADER) for r in table.rows)
+    table = forward_flight.claims_table(_synthetic_convergence(), wsph, rate7, maps, flutter, threshold, sens)
+    assert len(table.rows) == 7 and all(len(r) == len(forward_flight.CLAIMS_HEADER) for r in table.rows)
     assert table.markdown().splitlines()[0].startswith("| claim (the paper's figure numbers) | strict (numerical certificate) |")
     lines = table.summary().splitlines()
     assert len(lines) == 7 and "| strict: not reproduced" in lines[1]
