@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from rotorlyap.chapters.export import figure_csv, format_value
-from rotorlyap.chapters.theory import ConvergenceData
+from rotorlyap.chapters.algorithm import ConvergenceData
 
 
 @dataclass(frozen=True)

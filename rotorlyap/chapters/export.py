@@ -1,7 +1,7 @@
 """Figure data as CSV files, for the download link under each figure of the book.
 
 :func:`figure_csv` writes the arrays a figure is drawn from (a figure-data dataclass of
-:mod:`rotorlyap.chapters.theory`, a mapping of names to values, or a list of named columns) as
+:mod:`rotorlyap.chapters.algorithm`, a mapping of names to values, or a list of named columns) as
 one CSV file with a header line. Two layouts, chosen automatically unless ``layout=`` says:
 
 **Wide** (one column per field), when every field is a scalar or a 1-D array and all 1-D

@@ -1,4 +1,4 @@
-"""Figures of the theorem and algorithm chapters (1 and 2): data, summaries, facts, drawings.
+"""Figures of chapter 2, the algorithm: data, summaries, facts, drawings.
 
 Per figure: a data function returning a frozen dataclass of arrays (no plotting); its
 ``summary()``, the rounded text the chapter prints (what nbval compares, since images are
@@ -6,19 +6,24 @@ not); its ``facts()``, the rounded numbers the chapter's text quotes, keyed by g
 ``plot_*`` function drawing the data on a matplotlib ``Axes``; and a ``figure_*`` function
 that creates the figure, draws it and returns it. A chapter's cell is then one call per step::
 
-    history = theory.norm_history_data(toy, res, [0, 18, 36, 54], n_starts=32, n_periods=8)
-    fig = theory.figure_norm_history(history)
-    glue("fig_norm_history", fig, display=False)
-    figure_csv(history, "_data/fig-norm-history.csv")
-    print(history.summary())
-    glue_facts(history.facts())
+    region = algorithm.start_region_data(res)
+    fig = algorithm.figure_start_region(region)
+    glue("fig_start_region", fig, display=False)
+    figure_csv(region, "_data/fig-start-region.csv")
+    print(region.summary())
 
-The certificate itself (:class:`rotorlyap.methods.lyapunov.TechnicalStabilityResult`) is
-summarised by :func:`certificate_summary` and :func:`steps_summary`, and quoted through
-:func:`steps_facts`. All quantities are dimensionless (the systems of
-:mod:`rotorlyap.methods.examples`); azimuths are in radians unless a name ends in ``_deg``.
-Every number is rounded to the digits the search or integration behind it determines
-(:mod:`rotorlyap.reporting`): three or four decimals.
+The chapter's figures: the level sets of ``W`` and ``W'`` (:func:`level_sets_data`), the start
+region and step 6 by azimuth (:func:`start_region_data`), the largest norm of simulated motions
+(:func:`max_norm_data`, from the motions of
+:func:`~rotorlyap.chapters.norm_history.norm_history_data`, which chapter 1 uses too and which
+lives in :mod:`rotorlyap.chapters.norm_history`), the convergence in the sampling
+(:func:`convergence_data`) and the paper's rule against the sound one
+(:func:`rule_comparison_data`). The certificate itself
+(:class:`rotorlyap.methods.lyapunov.TechnicalStabilityResult`) is summarised step by step by
+:func:`steps_summary`, and quoted through :func:`steps_facts`. All quantities are dimensionless
+(the systems of :mod:`rotorlyap.methods.examples`); azimuths are in radians unless a name ends
+in ``_deg``. Every number is rounded to the digits the search or integration behind it
+determines (:mod:`rotorlyap.reporting`): three or four decimals.
 """
 
 from __future__ import annotations
@@ -33,15 +38,15 @@ from ..methods.examples import PeriodicSystem, pulsed_growth
 from ..methods.lyapunov import TechnicalStabilityResult, technical_stability
 from ..methods.simulation import simulate
 from ..reporting import percent
+# the chapter's notebook calls norm_history_data (of chapters 1 and 2) from this module
+from .norm_history import NormHistoryData, _circle, norm_history_data  # noqa: F401
 from .style import finish, subplots
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = [
-    "certificate_summary", "steps_summary", "steps_facts",
-    "PhasePortraitData", "phase_portrait_data", "plot_phase_portrait", "figure_phase_portrait",
-    "NormHistoryData", "norm_history_data", "plot_norm_history", "figure_norm_history",
+    "steps_summary", "steps_facts",
     "LevelSetData", "level_set_data", "plot_level_sets",
     "LevelSetsData", "level_sets_data", "figure_level_sets",
     "StartRegionData", "start_region_data", "plot_start_region", "figure_start_region",
@@ -49,27 +54,6 @@ __all__ = [
     "ConvergenceData", "convergence_data", "plot_convergence", "figure_convergence",
     "RuleComparisonData", "rule_comparison_data", "figure_rule_comparison",
 ]
-
-
-def certificate_summary(result: TechnicalStabilityResult) -> str:
-    """The certificate in two lines: its message, then ``A``, ``alpha`` and the range of ``lambda0``.
-
-    Parameters
-    ----------
-    result : TechnicalStabilityResult
-        From :func:`rotorlyap.technical_stability`.
-
-    Returns
-    -------
-    str
-        ``A``, ``alpha`` and ``lambda0`` (scaled norm and units of ``W``, dimensionless here)
-        to four decimals.
-    """
-    return (
-        f"{result.message}\n"
-        f"A = {result.A:.4f}, alpha = {result.alpha:.4f}, "
-        f"lambda0 from {np.min(result.lambda0):.4f} to {np.max(result.lambda0):.4f}"
-    )
 
 
 def steps_summary(result: TechnicalStabilityResult) -> str:
@@ -123,291 +107,6 @@ def steps_facts(result: TechnicalStabilityResult, prefix: str = "ch2") -> dict:
         f"{prefix}_lam_max": round(float(np.max(result.lambda0)), 4),
         f"{prefix}_n_stable": int(np.sum(result.stable)),
     }
-
-
-def _circle(radius: float, scales: np.ndarray, n: int = 361) -> np.ndarray:
-    t = np.linspace(0, 2 * np.pi, n)
-    return radius * np.stack([np.cos(t), np.sin(t)], axis=1) * scales[:2]
-
-
-@dataclass(frozen=True)
-class PhasePortraitData:
-    """Motions in the state plane of a 2-state system, with the bounds of the theorem.
-
-    Attributes
-    ----------
-    psi0 : float
-        Start azimuth.
-    A, lambda0 : float
-        Bound after step 3 and the start-region radius at ``psi0``.
-    inside : numpy.ndarray
-        Motions started just inside ``lambda0``, shape ``(k, m, 2)``.
-    outside : tuple of numpy.ndarray
-        Motions started outside ``A``, each of shape ``(k_i, 2)`` (an escaping motion is
-        stopped when its norm reaches ``escape``).
-    outside_escaped : tuple of bool
-        Whether each of those motions escaped (left the norm ``escape``).
-    circle_A, circle_lambda0 : numpy.ndarray
-        The two circles of the scaled norm, shape ``(361, 2)``.
-    """
-
-    psi0: float
-    A: float
-    lambda0: float
-    inside: np.ndarray
-    outside: tuple
-    outside_escaped: tuple
-    circle_A: np.ndarray
-    circle_lambda0: np.ndarray
-
-    @property
-    def max_inside_norm(self) -> float:
-        """Largest Euclidean norm, in the plotted coordinates ``(y, y')``, of the motions started inside."""
-        return float(np.sqrt((self.inside**2).sum(axis=2)).max())
-
-    def summary(self) -> str:
-        """``A`` and ``lambda0(psi0)``, the largest norm reached from inside (four decimals), and
-        for each motion started outside ``A`` its start (two decimals) and whether it escaped."""
-        lines = [
-            "phase portrait: A = %.4f, lambda0(psi0) = %.4f" % (self.A, self.lambda0),
-            "largest norm of the motions started inside lambda0: %.4f" % self.max_inside_norm,
-        ]
-        for path, esc in zip(self.outside, self.outside_escaped):
-            lines.append("motion started at (y, y') = (%.2f, %.2f): %s" % (*path[0], "escapes" if esc else "bounded"))
-        return "\n".join(lines)
-
-
-def phase_portrait_data(
-    system: PeriodicSystem,
-    result: TechnicalStabilityResult,
-    j: int = 0,
-    *,
-    n_starts: int = 8,
-    n_periods: float = 6.0,
-    outside_starts=((0.8, 0.5), (0.0, 1.0)),
-    escape: float = 3.0,
-) -> PhasePortraitData:
-    """Simulate motions from the certified start region and some from outside ``A``.
-
-    Parameters
-    ----------
-    system : PeriodicSystem
-        A 2-state system (see :mod:`rotorlyap.methods.examples`).
-    result : TechnicalStabilityResult
-        Its certificate from :func:`rotorlyap.technical_stability`.
-    j : int
-        Index of the start azimuth in ``result.psi``.
-    n_starts : int
-        Starts equally spaced on the circle of radius ``0.99 lambda0_j``.
-    n_periods : float
-        Simulated length.
-    outside_starts : sequence of pairs
-        Initial states of the motions started outside ``A``.
-    escape : float
-        Norm at which a motion counts as escaped and is stopped.
-    """
-    psi0 = float(result.psi[j])
-    lam = float(result.lambda0[j])
-    t = 2 * np.pi * np.arange(n_starts) / n_starts
-    x0 = 0.99 * lam * np.stack([np.cos(t), np.sin(t)], axis=1) * result.scales
-    inside = simulate(system.f, x0, psi0, n_periods, period=system.period, scales=result.scales)
-    outs, escaped = [], []
-    for start in outside_starts:
-        out = simulate(
-            system.f, np.asarray(start, dtype=float)[None, :], psi0, n_periods,
-            period=system.period, scales=result.scales, escape=escape,
-        )
-        outs.append(out.x[:, 0, :])
-        escaped.append(bool(out.escaped[0]))
-    return PhasePortraitData(
-        psi0=psi0, A=result.A, lambda0=lam, inside=inside.x, outside=tuple(outs),
-        outside_escaped=tuple(escaped), circle_A=_circle(result.A, result.scales),
-        circle_lambda0=_circle(lam, result.scales),
-    )
-
-
-def plot_phase_portrait(data: PhasePortraitData, ax, *, labels=("$y$", "$y'$")) -> None:
-    """Draw :class:`PhasePortraitData` (in the spirit of the paper's lost Fig. 1)."""
-    ax.fill(*data.circle_A.T, color="tab:green", alpha=0.08, lw=0)
-    ax.plot(*data.circle_A.T, color="tab:green", lw=2, label=r"$\|x\| = A$ (bound)")
-    ax.plot(*data.circle_lambda0.T, color="tab:blue", lw=2,
-            label=rf"$\|x\| = \lambda_0(\psi_0)$, $\psi_0 = {np.degrees(data.psi0):.0f}^\circ$")
-    for i in range(data.inside.shape[1]):
-        ax.plot(*data.inside[:, i, :].T, color="0.35", lw=0.7,
-                label="motions started inside $\\lambda_0$" if i == 0 else None)
-        ax.plot(*data.inside[0, i, :], "o", color="tab:blue", ms=3)
-    for path, esc in zip(data.outside, data.outside_escaped):
-        color = "tab:red" if esc else "tab:purple"
-        ax.plot(*path.T, color=color, lw=1.2,
-                label="started outside $A$, " + ("escapes" if esc else "stays bounded"))
-        ax.plot(*path[0], "o", color=color, ms=4)
-    lim = max(2.5 * data.A, 1.3 * max(float(np.abs(p[0]).max()) for p in data.outside))
-    ax.set_xlim(-lim, lim)
-    ax.set_ylim(-lim, lim)
-    ax.set_xlabel(labels[0])
-    ax.set_ylabel(labels[1])
-    ax.set_aspect("equal")
-    # under the axes, not over the motions, two columns (readable at phone width)
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=9, frameon=False,
-              borderaxespad=0.0)
-
-
-def figure_phase_portrait(data: PhasePortraitData, *, title: str | None = None) -> Figure:
-    """A new 6 x 7 in figure of :class:`PhasePortraitData` (:func:`plot_phase_portrait`), the
-    state plane at equal aspect, the legend under the axes.
-
-    Parameters
-    ----------
-    data : PhasePortraitData
-    title : str, optional
-        Axes title (the system's name, say).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
-    """
-    fig, ax = subplots(figsize=(6, 7))
-    plot_phase_portrait(data, ax)
-    if title is not None:
-        ax.set_title(title, fontsize=10)
-    return finish(fig)
-
-
-@dataclass(frozen=True)
-class NormHistoryData:
-    """Norm of simulated motions against azimuth, with ``A`` and ``lambda0(psi)``.
-
-    Attributes
-    ----------
-    psi_grid, lambda0 : numpy.ndarray
-        The certificate's azimuths and start radii.
-    A : float
-        The bound.
-    psi : list of numpy.ndarray
-        For each start azimuth, the output azimuths (shape ``(k,)``).
-    norm : list of numpy.ndarray
-        For each start azimuth, norms of its motions, shape ``(k, m)``.
-    max_ratio : float
-        Largest ``||x|| / A`` over all motions: below 1 is the theorem's conclusion.
-    n_periods : float
-        Simulated length of every motion, in periods.
-    fraction : float
-        Start radius of the motions as a fraction of ``lambda0`` at their start azimuth.
-    """
-
-    psi_grid: np.ndarray
-    lambda0: np.ndarray
-    A: float
-    psi: list
-    norm: list
-    max_ratio: float
-    n_periods: float
-    fraction: float
-
-    @property
-    def n_motions(self) -> int:
-        """Number of simulated motions, over all start azimuths."""
-        return int(sum(n.shape[1] for n in self.norm))
-
-    def summary(self) -> str:
-        """The largest ``||x|| / A`` over all motions (three decimals), with their number and length."""
-        return "largest ||x|| / A over %d motions and %g periods: %.3f" % (
-            self.n_motions, self.n_periods, self.max_ratio)
-
-    def facts(self, prefix: str = "ch1") -> dict:
-        """``{prefix}_max_ratio``, and the certificate the motions test: ``{prefix}_A``,
-        ``{prefix}_lam_min``, ``{prefix}_lam_max`` (scaled norm), all to three decimals."""
-        return {
-            f"{prefix}_max_ratio": round(float(self.max_ratio), 3),
-            f"{prefix}_A": round(float(self.A), 3),
-            f"{prefix}_lam_min": round(float(np.min(self.lambda0)), 3),
-            f"{prefix}_lam_max": round(float(np.max(self.lambda0)), 3),
-        }
-
-
-def norm_history_data(
-    system: PeriodicSystem,
-    result: TechnicalStabilityResult,
-    start_indices,
-    *,
-    n_starts: int = 32,
-    n_periods: float = 20.0,
-    fraction: float = 0.999,
-    seed: int = 0,
-) -> NormHistoryData:
-    """Simulate motions started on ``fraction * lambda0`` at several azimuths.
-
-    Start directions are spread deterministically on the sphere (a seeded generator), so
-    the same call gives the same motions.
-
-    Parameters
-    ----------
-    system : PeriodicSystem
-        The system (see :mod:`rotorlyap.methods.examples`).
-    result : TechnicalStabilityResult
-        Its certificate from :func:`rotorlyap.technical_stability`.
-    start_indices : iterable of int
-        Indices of the start azimuths in ``result.psi``.
-    n_starts : int
-        Motions per start azimuth.
-    n_periods : float
-        Simulated length, in periods.
-    fraction : float
-        Start radius as a fraction of ``lambda0`` at the start azimuth (scaled norm).
-    seed : int
-        Seed of the start directions.
-    """
-    rng = np.random.default_rng(seed)
-    n = result.scales.size
-    psis, norms, worst = [], [], 0.0
-    for j in start_indices:
-        u = rng.normal(size=(n_starts, n))
-        u /= np.linalg.norm(u, axis=1, keepdims=True)
-        x0 = fraction * result.lambda0[j] * u * result.scales
-        sim = simulate(system.f, x0, result.psi[j], n_periods, period=system.period, scales=result.scales)
-        psis.append(sim.psi)
-        norms.append(sim.norm)
-        worst = max(worst, float(sim.max_norm.max()) / result.A)
-    return NormHistoryData(result.psi, result.lambda0, result.A, psis, norms, worst,
-                           n_periods=float(n_periods), fraction=float(fraction))
-
-
-def plot_norm_history(data: NormHistoryData, ax, *, unit: str = "rev") -> None:
-    """Draw :class:`NormHistoryData` (in the spirit of the paper's lost Fig. 2)."""
-    period = 2 * np.pi
-    end = max(p[-1] for p in data.psi)
-    reps = int(np.ceil(end / period)) + 1
-    grid = np.concatenate([data.psi_grid + k * period for k in range(reps)])
-    lam = np.tile(data.lambda0, reps)
-    ax.axhline(data.A, color="tab:green", lw=2, label="$A$")
-    ax.fill_between(grid / period, 0, lam, color="tab:blue", alpha=0.25, step="mid",
-                    label=r"start region $\|x\| < \lambda_0(\psi)$")
-    colors = ["0.2", "tab:orange", "tab:purple", "tab:brown", "tab:olive"]
-    for i, (p, nrm) in enumerate(zip(data.psi, data.norm)):
-        ax.plot(p / period, nrm, color=colors[i % len(colors)], lw=0.4, alpha=0.6)
-        ax.plot(p[0] / period, nrm[0, 0], "o", color=colors[i % len(colors)], ms=4,
-                label=rf"starts at $\psi_0 = {np.degrees(p[0]):.0f}^\circ$")
-    ax.set_xlim(0, end / period)
-    ax.set_ylim(0, 1.6 * data.A)  # room above A for the legend
-    ax.set_xlabel(r"azimuth $\psi$ / $2\pi$ (periods)")
-    ax.set_ylabel(r"scaled norm $\|x(\psi)\|$")
-    ax.legend(loc="upper right", fontsize=8, ncol=3, columnspacing=1.0, handlelength=1.5)
-
-
-def figure_norm_history(data: NormHistoryData) -> Figure:
-    """A new 7 x 3.6 in figure of :class:`NormHistoryData` (:func:`plot_norm_history`), titled
-    with the start radius.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Laid out and already closed in pyplot (a notebook shows it only where it is glued).
-    """
-    fig, ax = subplots(figsize=(7, 3.6))
-    plot_norm_history(data, ax)
-    ax.set_title(rf"Norm of motions started on ${data.fraction:g}\,\lambda_0(\psi_0)$")
-    return finish(fig)
 
 
 @dataclass(frozen=True)
@@ -808,7 +507,8 @@ class MaxNormData:
 
 
 def max_norm_data(history: NormHistoryData) -> MaxNormData:
-    """Reduce simulated motions (:func:`norm_history_data`) to one row per motion."""
+    """Reduce simulated motions (:func:`~rotorlyap.chapters.norm_history.norm_history_data`) to one
+    row per motion."""
     start_deg = np.concatenate([np.full(n.shape[1], np.degrees(p[0])) for p, n in zip(history.psi, history.norm)])
     return MaxNormData(
         start_psi_deg=start_deg,

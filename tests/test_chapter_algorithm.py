@@ -1,4 +1,4 @@
-"""rotorlyap.chapters.theory: what chapters 1 and 2 print (summary) and quote (facts), and their figures.
+"""rotorlyap.chapters.algorithm: what chapter 2 prints (summary) and quotes (facts), and its figures.
 
 Each fact must be the data field it names, rounded to the digits the chapter states; each
 summary must hold those numbers; each figure function must return a finished figure of the
@@ -17,7 +17,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import rotorlyap  # noqa: E402
-from rotorlyap.chapters import theory  # noqa: E402
+from rotorlyap.chapters import algorithm  # noqa: E402
 from rotorlyap.chapters.export import figure_csv  # noqa: E402
 from rotorlyap.methods.examples import mathieu_duffing  # noqa: E402
 
@@ -34,12 +34,12 @@ def res(toy):
 
 @pytest.fixture(scope="module")
 def history(toy, res):
-    return theory.norm_history_data(toy, res, [0, 6, 12], n_starts=4, n_periods=2)
+    return algorithm.norm_history_data(toy, res, [0, 6, 12], n_starts=4, n_periods=2)
 
 
 @pytest.fixture(scope="module")
 def levels(toy, res):
-    return theory.level_sets_data(toy, res, n_grid=31, extent=1.15)
+    return algorithm.level_sets_data(toy, res, n_grid=31, extent=1.15)
 
 
 def _plain(value) -> bool:
@@ -49,7 +49,7 @@ def _plain(value) -> bool:
 # ---- the certificate (steps 1 to 6)
 
 def test_steps_facts_are_the_certificate_rounded_to_the_digits_chapter_2_quotes(res):
-    facts = theory.steps_facts(res)
+    facts = algorithm.steps_facts(res)
     assert facts == {
         "ch2_A_req": 1.0,
         "ch2_step3": round(res.step3_max_dW, 3),
@@ -62,20 +62,19 @@ def test_steps_facts_are_the_certificate_rounded_to_the_digits_chapter_2_quotes(
 
 
 def test_facts_are_plain_python_numbers_so_the_glued_text_carries_no_numpy_type(res, history, levels):
-    for facts in (theory.steps_facts(res), history.facts(), levels.facts(),
-                  theory.max_norm_data(history).facts()):
+    for facts in (algorithm.steps_facts(res), levels.facts(),
+                  algorithm.max_norm_data(history).facts()):
         assert all(_plain(v) for v in facts.values()), facts
         assert not any("np." in repr(v) for v in facts.values())
 
 
-def test_facts_prefix_names_the_chapter_quoting_them(res, history):
-    assert set(theory.steps_facts(res, prefix="ch9")) == {
+def test_facts_prefix_names_the_chapter_quoting_them(res):
+    assert set(algorithm.steps_facts(res, prefix="ch9")) == {
         "ch9_A_req", "ch9_step3", "ch9_A", "ch9_alpha", "ch9_lam_min", "ch9_lam_max", "ch9_n_stable"}
-    assert set(history.facts(prefix="ch2")) == {"ch2_max_ratio", "ch2_A", "ch2_lam_min", "ch2_lam_max"}
 
 
 def test_steps_summary_holds_every_step_number(res):
-    lines = theory.steps_summary(res).splitlines()
+    lines = algorithm.steps_summary(res).splitlines()
     assert lines[0] == res.message and not any("TechnicalStabilityResult" in ln for ln in lines)
     assert lines[1] == "step 3: largest W' on ||x|| = 1.00: %.4f" % res.step3_max_dW
     assert lines[2] == "step 3: A = %.4f;  step 4: alpha = %.5f" % (res.A, res.alpha)
@@ -86,44 +85,10 @@ def test_steps_summary_holds_every_step_number(res):
     assert "%.2e" % res.max_dW.max() in lines[4]
 
 
-def test_certificate_summary_is_the_message_then_A_alpha_and_the_range_of_lambda0(res):
-    message, numbers = theory.certificate_summary(res).splitlines()
-    assert message == res.message
-    assert numbers == "A = %.4f, alpha = %.4f, lambda0 from %.4f to %.4f" % (
-        res.A, res.alpha, res.lambda0.min(), res.lambda0.max())
-
-
-# ---- phase portrait (chapter 1)
-
-def test_phase_portrait_summary_gives_the_bounds_and_the_fate_of_each_outside_motion(toy, res):
-    portrait = theory.phase_portrait_data(toy, res, 0, n_starts=4, n_periods=2)
-    lines = portrait.summary().splitlines()
-    assert lines[0] == "phase portrait: A = %.4f, lambda0(psi0) = %.4f" % (portrait.A, portrait.lambda0)
-    assert lines[1].endswith("%.4f" % portrait.max_inside_norm)
-    assert portrait.max_inside_norm < portrait.lambda0  # unit scales: the theorem, in the plane
-    assert len(lines) == 2 + len(portrait.outside)
-    for line, path, esc in zip(lines[2:], portrait.outside, portrait.outside_escaped):
-        assert line == "motion started at (y, y') = (%.2f, %.2f): %s" % (*path[0], "escapes" if esc else "bounded")
-
-
-# ---- norm history (chapter 1) and the largest norm per motion (chapter 2)
-
-def test_norm_history_facts_are_its_fields_rounded_to_three_decimals(history):
-    assert history.facts() == {
-        "ch1_max_ratio": round(history.max_ratio, 3),
-        "ch1_A": round(history.A, 3),
-        "ch1_lam_min": round(float(history.lambda0.min()), 3),
-        "ch1_lam_max": round(float(history.lambda0.max()), 3),
-    }
-
-
-def test_norm_history_summary_counts_the_motions_and_periods(history):
-    assert history.n_motions == 12 and history.n_periods == 2.0 and history.fraction == 0.999
-    assert history.summary() == "largest ||x|| / A over 12 motions and 2 periods: %.3f" % history.max_ratio
-
+# ---- the largest norm per motion (of the motions of rotorlyap.chapters.norm_history)
 
 def test_max_norm_data_has_one_row_per_motion_and_the_history_s_largest_ratio(history):
-    check = theory.max_norm_data(history)
+    check = algorithm.max_norm_data(history)
     assert check.start_psi_deg.shape == check.max_norm_over_A.shape == check.start_radius_over_A.shape == (12,)
     assert check.max_ratio == history.max_ratio
     assert np.array_equal(np.unique(check.start_psi_deg), np.degrees(history.psi_grid[[0, 6, 12]]))
@@ -134,7 +99,7 @@ def test_max_norm_data_has_one_row_per_motion_and_the_history_s_largest_ratio(hi
 
 
 def test_max_norm_csv_has_the_three_columns_one_row_per_motion(history, tmp_path):
-    text = figure_csv(theory.max_norm_data(history), tmp_path / "m.csv").read_text().splitlines()
+    text = figure_csv(algorithm.max_norm_data(history), tmp_path / "m.csv").read_text().splitlines()
     assert text[0] == "start_psi_deg,max_norm_over_A,start_radius_over_A" and len(text) == 13
 
 
@@ -181,14 +146,14 @@ def test_level_set_subsampled_refuses_a_step_below_one(levels):
 # ---- start region (chapter 2)
 
 def test_start_region_summary_quotes_lambda0_and_max_dW_a_quarter_period_apart(res):
-    region = theory.start_region_data(res)
+    region = algorithm.start_region_data(res)
     lam, dw = region.summary().splitlines()
     assert lam == f"lambda0 at psi = 0, 90, 180, 270 deg: {np.round(res.lambda0[::6], 4)}"
     assert dw == f"max W' on the shell at psi = 0, 90, 180, 270 deg: {np.round(res.max_dW[::6], 6)}"
 
 
 def test_start_region_csv_has_one_row_per_azimuth(res, tmp_path):
-    text = figure_csv(theory.start_region_data(res), tmp_path / "s.csv").read_text().splitlines()
+    text = figure_csv(algorithm.start_region_data(res), tmp_path / "s.csv").read_text().splitlines()
     assert text[0] == "psi_deg,lambda0,A,A_requested,max_dW" and len(text) == 25
 
 
@@ -196,7 +161,7 @@ def test_start_region_csv_has_one_row_per_azimuth(res, tmp_path):
 
 def _convergence(A, lam_mean, n_sphere=(0, 16, 64)):
     n = len(n_sphere)
-    return theory.ConvergenceData(
+    return algorithm.ConvergenceData(
         n_sphere=np.array(n_sphere), A=np.array(A, dtype=float), alpha=np.ones(n), lambda0_min=np.ones(n),
         lambda0_mean=np.array(lam_mean, dtype=float), A_raw=np.ones(n), lambda0_mean_raw=np.ones(n))
 
@@ -229,39 +194,34 @@ def test_convergence_without_sampled_runs_has_no_deviation():
 
 # ---- figures
 
-def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_pyplot(toy, res, history, levels):
-    portrait = theory.phase_portrait_data(toy, res, 0, n_starts=2, n_periods=1)
+def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_pyplot(res, history, levels):
     conv = _convergence(A=[0.44, 0.41, 0.40], lam_mean=[0.3, 0.29, 0.28])
     cases = [
-        (theory.figure_phase_portrait(portrait, title="t"), (6, 7), 1),
-        (theory.figure_norm_history(history), (7, 3.6), 1),
-        (theory.figure_level_sets(levels), (7.6, 4.2), 2),
-        (theory.figure_start_region(theory.start_region_data(res)), (7, 3.6), 2),
-        (theory.figure_max_norm(theory.max_norm_data(history)), (7, 3.4), 1),
-        (theory.figure_convergence(conv), (7, 3.8), 1),
+        (algorithm.figure_level_sets(levels), (7.6, 4.2), 2),
+        (algorithm.figure_start_region(algorithm.start_region_data(res)), (7, 3.6), 2),
+        (algorithm.figure_max_norm(algorithm.max_norm_data(history)), (7, 3.4), 1),
+        (algorithm.figure_convergence(conv), (7, 3.8), 1),
     ]
     for fig, size, n_axes in cases:
         assert tuple(fig.get_size_inches()) == pytest.approx(size)
         assert len(fig.axes) == n_axes
         assert fig.number not in plt.get_fignums()
-    assert cases[0][0].axes[0].get_title() == "t"
-    assert "0.999" in cases[1][0].axes[0].get_title()
 
 
 def test_all_names_exist():
-    assert all(hasattr(theory, name) for name in theory.__all__)
+    assert all(hasattr(algorithm, name) for name in algorithm.__all__)
 
 
 def test_rule_comparison_shows_the_paper_rule_certifying_escaping_starts():
     """The chapter-2 counterexample: the paper's rule certifies azimuths whose motions pass A;
     the sound rule certifies none; the figure has its two panels with labelled axes."""
-    data = theory.rule_comparison_data(n_periods=2.0)
+    data = algorithm.rule_comparison_data(n_periods=2.0)
     facts = data.facts()
     assert facts["ch2_cx_n_paper"] > 0 and facts["ch2_cx_n_sound"] == 0
     assert facts["ch2_cx_max_ratio"] > 1.0 and facts["ch2_cx_band_max"] > 0
     assert data.sim_norm.shape[1] == facts["ch2_cx_n_paper"]
     assert set(data.export()) == {"psi_deg", "lambda0_paper", "certified_paper", "certified_sound"}
-    fig = theory.figure_rule_comparison(data)
+    fig = algorithm.figure_rule_comparison(data)
     assert tuple(fig.get_size_inches()) == pytest.approx((7.6, 4.6))
     assert [ax.get_xlabel() for ax in fig.axes] == [r"azimuth $\psi$ (deg)", "revolutions after the start"]
     assert fig.number not in plt.get_fignums()
