@@ -13,6 +13,8 @@ functions), so a lazy import cannot hide a circle.
 from __future__ import annotations
 
 import ast
+import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -127,3 +129,84 @@ def test_the_package_top_level_loads_its_names_on_first_use():
             "print(sorted(before), 'rotorlyap.analysis.stability' in after)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[] True"
+
+
+# --- the top floor arranged by the book (issue 43) ------------------------------------------
+
+MAX_MODULE_LINES = 1500
+BOOK = PACKAGE.parent / "book"
+# the line under a chapter's title that names the module its computations live in, e.g.
+# "*Computed in {doc}`rotorlyap.chapters.hover <api/rotorlyap.chapters.hover>`*"
+_NAMED = re.compile(r"^\*Computed in \{doc\}`(rotorlyap\.chapters\.\w+) <api/\1>`\.?\*$", re.M)
+
+
+def _chapter_modules() -> dict[str, str]:
+    """Notebook name -> the module its first cell names under the title."""
+    named = {}
+    for nb in sorted(BOOK.glob("*.ipynb")):
+        first = "".join(json.loads(nb.read_text())["cells"][0]["source"])
+        found = _NAMED.findall(first)
+        named[nb.name] = found[0] if len(found) == 1 else None
+    return named
+
+
+def _inside(module: str, target: str) -> bool:
+    return target == module or target.startswith(module + ".")
+
+
+def test_no_module_is_longer_than_the_limit():
+    """A module a newcomer can read: none above 1,500 lines (the generated equations excepted)."""
+    long = {name: n for name, path in _modules().items()
+            if (n := len(path.read_text().splitlines())) > MAX_MODULE_LINES}
+    assert not long, f"modules above {MAX_MODULE_LINES} lines: {long}"
+
+
+def test_each_chapter_names_the_one_module_its_computations_live_in():
+    named = _chapter_modules()
+    missing = [nb for nb, m in named.items() if m is None]
+    assert not missing, ("chapters without the line under their title naming their module "
+                         f"('*Computed in {{doc}}`rotorlyap.chapters.X <api/rotorlyap.chapters.X>`*'): {missing}")
+    mods = _modules()
+    unknown = {nb: m for nb, m in named.items() if m not in mods}
+    assert not unknown, f"chapters naming a module that does not exist: {unknown}"
+
+
+def test_a_chapter_module_imports_no_other_chapters_module(graph):
+    """A chapter's module (with its submodules) uses no other chapter's module, directly or
+    through a shared module: a change to one chapter's experiments stays in that chapter. (The
+    command line's figures, ``chapters.commands``, draw several chapters: no chapter uses it.)"""
+    chapters = set(_chapter_modules().values()) - {None}
+    bad = []
+    for own in sorted(chapters):
+        seen, todo = set(), [m for m in graph if _inside(own, m)]
+        while todo:
+            m = todo.pop()
+            for t in graph[m]:
+                if t in seen or not t.startswith("rotorlyap.chapters"):
+                    continue
+                seen.add(t)
+                other = next((c for c in chapters if _inside(c, t)), None)
+                if other is not None and other != own:
+                    bad.append(f"{own} uses {t} (through {m}), another chapter's module")
+                elif other is None:
+                    todo.append(t)
+    assert not bad, "\n".join(bad)
+
+
+def test_a_notebook_calls_only_its_own_chapter_module_and_shared_ones():
+    chapters = set(_chapter_modules().values()) - {None}
+    bad = []
+    for nb, own in _chapter_modules().items():
+        code = "\n".join("".join(c["source"]) for c in json.loads((BOOK / nb).read_text())["cells"]
+                         if c["cell_type"] == "code")
+        used = set()
+        for node in ast.walk(ast.parse("\n".join(l for l in code.splitlines() if not l.startswith(("%", "!"))))):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("rotorlyap.chapters"):
+                used |= {node.module} | {f"{node.module}.{a.name}" for a in node.names}
+            elif isinstance(node, ast.Import):
+                used |= {a.name for a in node.names if a.name.startswith("rotorlyap.chapters")}
+        for t in used:
+            other = next((c for c in chapters if _inside(c, t)), None)
+            if other is not None and other != own:
+                bad.append(f"{nb} uses {t}, another chapter's module")
+    assert not bad, "\n".join(bad)
