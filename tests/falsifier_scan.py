@@ -6,7 +6,7 @@ Not a test module: ``test_falsifier_forward.py``, ``test_falsifier_neutral.py`` 
 pytest-xdist's ``--dist loadfile`` spreads them over the workers).
 
 For each cell of the scan (strict candidates, the chapter's advance ratios and engine options,
-:data:`rotorlyap.chapters.validation.SCAN_OPTIONS`) that the book reports as certified, the
+:data:`rotorlyap.chapters.validation.common.SCAN_OPTIONS`) that the book reports as certified, the
 adversary of :mod:`falsifier` (other optimisers; on the band :data:`BAND_FACTOR` times the
 evaluations of the engine's final check of the bound)
 must find ``W >= alpha`` on the sphere ``A``, ``W <= alpha`` on the boundaries of the start balls

@@ -169,7 +169,7 @@ class ProofTable:
         step of chapter 8's advance-ratio grid ``ch10_mu_step``."""
         import inspect
 
-        from .flight import MU_FORENSIC
+        from .scans import MU_FORENSIC
 
         f = {"ch10_n_psi": int(self.rows[0].certificate.result.psi.size),
              "ch10_taylor_order": int(inspect.signature(prove_blade).parameters["order"].default),

@@ -38,8 +38,8 @@ from ..model.mass import mass_properties
 from ..model.parameters import CG_POSITIONS, BladeParameters
 from ..model.steady import tabulate_motion
 from .export import markdown_table
+from .scans import MU_FORENSIC, ScanData, _category
 from .style import CG_COLORS, CG_MARKERS, figure, finish, subplots
-from .validation import _category  # the verdict categories of chapter 7's scans
 
 __all__ = [
     "CASES", "MU_TRIM", "MU_FORENSIC", "INFLOW_CHOICES", "PUMA_SECTION", "puma_radius_of_gyration",
@@ -56,9 +56,6 @@ CASES = ("forward", "neutral", "backward")
 
 #: Advance ratios of the trim sweep.
 MU_TRIM = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3)
-
-#: Advance ratios of the forensic test of Fig. 8 (the paper's range, in its Fig. 8 steps).
-MU_FORENSIC = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
 
 #: Inflow models compared.
 INFLOW_CHOICES = ("glauert", "drees", "pitt-peters")
@@ -1133,15 +1130,13 @@ def verdict_data(cases=CASES, mu_values=MU_FORENSIC, *, n_psi: int = 36, candida
                  workers: int | None = None):
     """The engine's verdicts about the trimmed helicopter's periodic motion
     (:meth:`BladeParameters.flight_case`, :func:`forward_flight_trim`, its own state in hover),
-    as a :class:`rotorlyap.chapters.validation.ScanData` (for
-    :func:`rotorlyap.chapters.validation.figure_scan`): categories of
-    :data:`rotorlyap.chapters.validation.SCAN_CATEGORY_NAMES`, 4 where the linearised blade is
+    as a :class:`rotorlyap.chapters.scans.ScanData` (for
+    :func:`rotorlyap.chapters.scans.figure_scan`): categories of
+    :data:`rotorlyap.chapters.scans.SCAN_CATEGORY_NAMES`, 4 where the linearised blade is
     unstable and no quadratic function exists. The trims run here; the cells, independent, in
     ``workers`` fresh processes (default: every core; 1: here, one after the other; the same
     verdicts either way, :func:`rotorlyap.analysis.sweep.process_map`).
     """
-    from .validation import ScanData
-
     mu_values = np.asarray(mu_values, dtype=float)
     trims = {(case, float(mu)): forward_flight_trim(BladeParameters.flight_case(case), float(mu))
              for case in cases for mu in mu_values}
