@@ -36,7 +36,7 @@ numbers the chapter's text quotes, ``{glue name: rounded value}``
 creates, draws and returns it (closed in pyplot, so that only its glued copy is shown), and the
 figure's data object an ``export()`` for :func:`rotorlyap.chapters.export.figure_csv`.
 
-Conventions as :mod:`rotorlyap.chapters.paper`: ``psi = 0`` over the tail, ``psi = 90 deg``
+Conventions as :mod:`rotorlyap.chapters.forward_flight`: ``psi = 0`` over the tail, ``psi = 90 deg``
 the advancing side; growth rates and frequencies per rev.
 
 The chapter's modules, whose names this package re-exports (``from rotorlyap.chapters import
