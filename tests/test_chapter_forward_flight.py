@@ -20,7 +20,7 @@ from matplotlib.figure import Figure  # noqa: E402
 from rotorlyap.chapters import cases, forward_flight  # noqa: E402
 from rotorlyap.chapters.export import figure_csv  # noqa: E402
 from rotorlyap.chapters.style import MIN_TEXT_PX, check_legible  # noqa: E402
-from rotorlyap.conventions import DEFAULT_SCALES  # noqa: E402
+from rotorlyap.conventions import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -110,7 +110,7 @@ def test_fig8_plane_plot_draws(regions):
 
 def test_sensitivity_variants_keep_their_labels_and_directions():
     d = forward_flight.sensitivity_data("forward", (0.0, 0.1), {"default": {}, "flap-lag": dict(
-        test_disturbances=cases.FLAP_LAG_TEST_DISTURBANCES)}, n_psi=4)
+        test_disturbances=forward_flight.FLAP_LAG_TEST_DISTURBANCES)}, n_psi=4)
     assert d.names == ("default", "flap-lag")
     assert d.n_tests == (12, 8)
     assert all(r.reading == "practical" for r in d.regions)
@@ -229,7 +229,7 @@ def test_fig8_figures_have_a_panel_per_reading_and_case_and_the_legend(maps):
                       (forward_flight.figure_regions_plane(maps.practical, maps.strict), (8.6, 2.75 + 0.75))):
         _closed_figure(fig, size, 2)
         [legend] = fig.legends
-        assert len(legend.get_texts()) == len(cases.CATEGORY_NAMES) + 1
+        assert len(legend.get_texts()) == len(forward_flight.CATEGORY_NAMES) + 1
         left, right = fig.axes
         assert left.get_position().x0 < right.get_position().x0  # practical left, strict right
         assert maps.practical.label in left.get_title() and maps.strict.label in right.get_title()
@@ -252,9 +252,9 @@ def test_fig8_every_verdict_has_its_hatch_in_the_map_and_the_legend(regions):
 
     from rotorlyap.chapters.style import CATEGORY_HATCHES
 
-    handles = cases.category_legend_handles()
+    handles = forward_flight.category_legend_handles()
     assert [h.get_hatch() or "" for h in handles[:-1]] == list(CATEGORY_HATCHES)
-    assert handles[-1].get_hatch() == cases.REVERSE_FLOW_HATCH not in CATEGORY_HATCHES
+    assert handles[-1].get_hatch() == forward_flight.REVERSE_FLOW_HATCH not in CATEGORY_HATCHES
     reg = dataclasses.replace(regions, mu_values=np.array([0.0, 0.2]))  # reverse flow reaches the root
     cat = reg.category.copy()
     cat[0, 1, :4] = [0, 1, 2, 3]
@@ -267,7 +267,7 @@ def test_fig8_every_verdict_has_its_hatch_in_the_map_and_the_legend(regions):
                    if isinstance(c, PolyCollection) and c.get_hatch()}
         for k, h in enumerate(CATEGORY_HATCHES):
             assert hatched.get(h, 0) == (int((cat[0] == k).sum()) if h else 0), (projection, h)
-        assert hatched.get(cases.REVERSE_FLOW_HATCH, 0) >= 1
+        assert hatched.get(forward_flight.REVERSE_FLOW_HATCH, 0) >= 1
         plt.close(fig)
 
 
@@ -362,3 +362,18 @@ def test_claims_table_has_a_row_per_claim_and_both_readings(wsph, rate7, maps, r
     assert len(lines) == 7 and "| strict: not reproduced" in lines[1]
     assert "-0.145 / -0.097 / -0.007" in table.rows[1][3]
     assert "0.0015 (Drees inflow)" in table.rows[5][3]
+
+
+def test_fig8_reverse_flow_reaches_the_root_only_on_the_retreating_side():
+    p = cases.case_params("forward")
+    psi = np.radians([90.0, 270.0])
+    b = forward_flight.reverse_flow_boundary(p, psi)
+    assert np.isinf(b[0])
+    assert b[1] == pytest.approx(p.root_r_over_R)
+
+
+def test_paper_test_disturbances_are_the_twelve_signed_axes():
+    assert PAPER_TEST_DISTURBANCES.shape == (12, 6)
+    assert forward_flight.AXES_AND_DIAGONALS.shape == (72, 6)
+    assert forward_flight.FLAP_LAG_TEST_DISTURBANCES.shape == (8, 6)
+    assert np.all(forward_flight.FLAP_LAG_TEST_DISTURBANCES[:, [2, 5]] == 0)

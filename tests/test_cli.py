@@ -231,12 +231,12 @@ def test_figures_writes_each_figure_whole_with_its_data(capsys, tmp_path):
 
 def test_the_fig8_picture_of_one_reading_has_the_category_legend():
     """The command line's Fig 8 (one reading per picture) carries the legend of the verdicts."""
-    from rotorlyap.chapters import cases, forward_flight
+    from rotorlyap.chapters import forward_flight
 
     data = forward_flight.regions_data(("forward",), (0.0, 0.1), reading="practical", n_psi=4)
     fig = forward_flight.figure_regions_polar(data)
     [legend] = fig.legends
-    assert [t.get_text().replace("\n", " ") for t in legend.get_texts()][:4] == list(cases.CATEGORY_NAMES)
+    assert [t.get_text().replace("\n", " ") for t in legend.get_texts()][:4] == list(forward_flight.CATEGORY_NAMES)
 
 
 def test_the_command_line_knows_the_trims_conditions():

@@ -14,10 +14,11 @@ One page per module keeps every page short enough to read and print (issue 42: t
 page was 495,000 px tall); ``tests/test_api_reference.py`` checks that every public module has
 its page.
 
-Three modules need more than the plain entry (:data:`SPECIAL`): the package
-:mod:`rotorlyap.chapters.validation` re-exports its submodules' names (chapter 7's notebook
-imports them from it), so its page holds its docstring only and each name is documented on its
-submodule's page; :mod:`rotorlyap.methods.intervals`
+Four modules need more than the plain entry (:data:`SPECIAL`): the packages
+:mod:`rotorlyap.chapters.forward_flight` and :mod:`rotorlyap.chapters.validation` re-export their
+submodules' names (the notebooks of chapters 6 and 7 import them from the package), so each page
+holds its docstring only and each name is documented on its submodule's page;
+:mod:`rotorlyap.methods.intervals`
 re-exports the float-ball class of :mod:`rotorlyap.methods.balls`, so its page leaves that class
 to the page of the module that defines it (two documented ``Balls`` would make every
 cross-reference to it ambiguous); and the module docstring of :mod:`rotorlyap.methods.balls`,
@@ -92,6 +93,7 @@ def _balls_entries() -> str:
 
 SPECIAL = {
     "rotorlyap.methods.intervals": ".. automodule:: rotorlyap.methods.intervals\n   :exclude-members: Balls",
+    "rotorlyap.chapters.forward_flight": ".. automodule:: rotorlyap.chapters.forward_flight\n   :no-members:",
     "rotorlyap.chapters.validation": ".. automodule:: rotorlyap.chapters.validation\n   :no-members:",
     "rotorlyap.methods.balls": _balls_entries,
 }

@@ -1,9 +1,11 @@
 """What chapters 5 (hover, :mod:`rotorlyap.chapters.hover`) and 6 (forward flight,
 :mod:`rotorlyap.chapters.forward_flight`) share, with the inputs of the paper's figures that
 the command line (:mod:`rotorlyap.chapters.commands`) also uses: the paper's three cases and
-their parameters, Fig. 8's grids of advance ratios and the test-disturbance sets, the labels
-of the two readings and of the state components, the norm scales balanced in energy, the
-reverse-flow boundary and its mark, and the categories of the region maps with their legend.
+their parameters, Fig. 8's grids of advance ratios, the labels of the two readings and of the
+state components, the names of test disturbances and the norm scales balanced in energy. What
+only chapter 6 uses (the test-disturbance sets, the reverse-flow boundary and its mark, the
+categories of the region maps with their legend) is in its package
+:mod:`rotorlyap.chapters.forward_flight`.
 
 Every quantity computed in a reading carries that reading's label, :data:`READING_LABELS`:
 the strict reading (suprema and infima over whole spheres, the theorem as stated) is a
@@ -22,17 +24,13 @@ from dataclasses import replace
 import numpy as np
 
 from ..analysis.functions import energy_function
-from ..conventions import DEFAULT_SCALES, PAPER_TEST_DISTURBANCES
-from ..methods.sampling import unit_sphere_points
+from ..conventions import DEFAULT_SCALES
 from ..model.blade import Blade
 from ..model.parameters import BladeParameters
-from .style import CATEGORY_COLORS, CATEGORY_HATCHES, HATCH_COLOR, HATCH_LINEWIDTH
 
 __all__ = [
-    "READING_LABELS", "CASES", "MU_GRID", "MU_GRID_STRICT", "STATE_LABELS",
-    "FLAP_LAG_TEST_DISTURBANCES", "AXES_AND_DIAGONALS", "CATEGORY_NAMES", "REVERSE_FLOW_HATCH",
-    "case_params", "balanced_scales", "reverse_flow_boundary", "disturbance_names",
-    "category_legend_handles",
+    "READING_LABELS", "CASES", "MU_GRID", "MU_GRID_STRICT", "STATE_LABELS", "case_params",
+    "balanced_scales", "disturbance_names",
 ]
 
 #: How each reading is labelled everywhere in the book.
@@ -40,12 +38,6 @@ READING_LABELS = {
     "strict": "strict (numerical certificate)",
     "practical": "practical (indicator, not a certificate)",
 }
-
-def _plain(tex: str) -> str:
-    """A state or axis name of a plot label (``"+\\beta'"``, ``"$\\zeta$"``) in plain text for a
-    printout (``"+beta'"``, ``"zeta"``): TeX is for the figures only."""
-    return tex.replace("$", "").replace("\\", "")
-
 
 #: The paper's three cases (Table I computation parameters), in order.
 CASES = ("forward", "neutral", "backward")
@@ -58,13 +50,6 @@ MU_GRID_STRICT = (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
 
 # TeX labels of the six state components (plot labels; kept out of the API page).
 STATE_LABELS = (r"$\beta$", r"$\zeta$", r"$\theta$", r"$\beta'$", r"$\zeta'$", r"$\theta'$")
-
-#: Test disturbances without the pitch rate: the eight signed flap and lag axes.
-FLAP_LAG_TEST_DISTURBANCES = PAPER_TEST_DISTURBANCES[[0, 1, 3, 4, 6, 7, 9, 10]]
-FLAP_LAG_TEST_DISTURBANCES.setflags(write=False)
-
-#: The 12 signed axes and the 60 signed diagonals of the coordinate planes.
-AXES_AND_DIAGONALS = unit_sphere_points(6, 0)
 
 _HINGES = ("flap", "lag", "pitch")
 
@@ -104,20 +89,6 @@ def balanced_scales(params: BladeParameters, scales=None) -> np.ndarray:
     return a * np.sqrt(ref / w)
 
 
-def reverse_flow_boundary(params: BladeParameters, psi: np.ndarray) -> np.ndarray:
-    """Advance ratio above which reverse flow reaches the blade root, at each azimuth.
-
-    The reverse-flow region is ``r/R < mu |sin psi|`` on the retreating side
-    (``180 < psi < 360`` deg); it reaches the aerodynamic span, which starts at
-    ``r/R = (R - R1)/R``, when ``mu > (R - R1)/(R |sin psi|)``. Returns ``inf`` on the
-    advancing side.
-    """
-    psi = np.asarray(psi, dtype=float)
-    s = -np.sin(psi)
-    with np.errstate(divide="ignore"):
-        return np.where(s > 1e-12, params.root_r_over_R / np.where(s > 1e-12, s, 1.0), np.inf)
-
-
 def disturbance_names(test_disturbances) -> tuple[str, ...]:
     """TeX names (without ``$``) of test disturbances along signed axes, ``"+\\beta'"`` etc.
 
@@ -133,52 +104,3 @@ def disturbance_names(test_disturbances) -> tuple[str, ...]:
 def _line(*parts) -> str:
     """One printed line, the way ``print(*parts)`` writes it."""
     return " ".join(str(p) for p in parts)
-
-
-#: Categories of a (mu, psi) cell in :class:`rotorlyap.chapters.forward_flight.RegionsData`.
-CATEGORY_NAMES = (
-    "passes: step 6 holds",
-    "step 6 fails at this azimuth",
-    "step 3 failed elsewhere (A1 = 0); W' <= 0 here on ||x|| = A",
-    "step 3 failed (A1 = 0) and W' > 0 here on ||x|| = A",
-)
-
-#: Hatch of the region where reverse flow reaches the blade root, drawn over the verdict maps
-#: with an outline: vertical lines, unlike the diagonal and dotted hatches of the verdicts
-#: (:data:`rotorlyap.chapters.style.CATEGORY_HATCHES`).
-REVERSE_FLOW_HATCH = "||"
-
-
-def category_legend_handles(reverse_flow_label: str = "reverse flow reaches the blade root", *,
-                            wrap: int | None = None) -> list:
-    """Legend handles of the region maps: one patch per :data:`CATEGORY_NAMES`, in its colour and
-    hatch, and the outlined, hatched reverse-flow region; ``wrap`` breaks the labels into lines
-    of at most that many characters."""
-    import textwrap
-
-    from matplotlib.patches import Patch
-
-    def lab(text):
-        return text if wrap is None else "\n".join(textwrap.wrap(text, wrap))
-
-    handles = [Patch(facecolor=c, hatch=h, edgecolor="0.3", hatchcolor=HATCH_COLOR, lw=0.6, label=lab(n),
-                     hatch_linewidth=HATCH_LINEWIDTH)
-               for c, h, n in zip(CATEGORY_COLORS, CATEGORY_HATCHES, CATEGORY_NAMES)]
-    handles.append(Patch(facecolor="none", edgecolor="k", hatch=REVERSE_FLOW_HATCH, hatchcolor="k", lw=1.5,
-                         label=lab(reverse_flow_label)))
-    return handles
-
-
-def _reverse_flow(ax, th, rb, top) -> None:
-    """Hatch (:data:`REVERSE_FLOW_HATCH`) and outline the region ``rb <= r <= top`` over the
-    azimuths ``th`` where ``rb <= top``: where reverse flow reaches the blade root."""
-    import matplotlib.patheffects as pe
-
-    ok = rb <= top
-    if not ok.any():
-        return
-    ax.fill_between(th[ok], rb[ok], top, facecolor="none", edgecolor="k", hatch=REVERSE_FLOW_HATCH, lw=0.0)
-    t, r = th[ok], rb[ok]
-    # the outline: the boundary, then back along the rim (white-edged, to stand out on any colour)
-    ax.plot(np.concatenate([t, np.linspace(t[-1], t[0], 90)]), np.concatenate([r, np.full(90, top)]),
-            "k-", lw=1.5, path_effects=[pe.withStroke(linewidth=3.0, foreground="w")], clip_on=False)

@@ -58,7 +58,7 @@ CG_ROMAN = {"forward": "I", "neutral": "II", "backward": "III"}
 CATEGORY_COLORS = (_GREEN, _SKY, _YELLOW, _VERMILLION)
 """Colours of the four verdicts of a region map: stable; stable only in the bound's shell;
 the practical reading's 'stable' where W' > 0 somewhere; unstable
-(rotorlyap.chapters.cases.CATEGORY_NAMES)."""
+(rotorlyap.chapters.forward_flight.regions.CATEGORY_NAMES)."""
 
 CATEGORY_HATCHES = ("", "//", "..", "xx")
 """Hatch pattern of each verdict of :data:`CATEGORY_COLORS` (none for 'stable')."""
