@@ -3,8 +3,9 @@
 Each ``plot_*`` function draws one result of the library into a new figure (closed in pyplot,
 laid out and checked for legibility by :func:`rotorlyap.chapters.style.finish`):
 
-* :func:`plot_modes`: the fan diagram (:func:`rotorlyap.analysis.modes.fan_plot`: frequency in Hz
-  against rotor speed in rad/s with the 1/rev to 4/rev lines, damping ratio) and the Floquet modes
+* :func:`plot_modes`: the fan diagram (:func:`rotorlyap.analysis.modes.fan_plot`: frequency per
+  rev of the nominal rotor speed against the rotor speed in % of it, with the 1/rev to 4/rev
+  lines, damping ratio) and the Floquet modes
   of the trimmed periodic motion (:func:`rotorlyap.analysis.modes.floquet_modes`: frequency per
   rev and growth rate per rev against the advance ratio), either or both;
 * :func:`plot_disturbed_motion`: the hinge angles of a disturbed motion
@@ -102,19 +103,24 @@ def _hinge_of(name: str) -> str:
 
 
 def _draw_fan(ax_f, ax_d, fan) -> None:
+    # the book's unit of a frequency is the rotor's revolution: on the fan diagram, whose rotor
+    # speed varies, both axes are taken at the nominal speed Omega_0 (frequency / Omega_0 against
+    # Omega / Omega_0 in %), so that the n/rev lines are straight and 1/rev meets the nominal
+    # speed at 1
+    nominal = float(fan.nominal_rotor_speed)
     omega = fan.rotor_speed
-    lo, hi = 0.0, float(omega.max()) * 1.05
-    # the n/rev lines: a frequency of n times the rotor speed, Hz
+    speed = 100.0 * omega / nominal  # % of nominal
+    lo, hi = 0.0, float(speed.max()) * 1.05
     top = 0.0
     for i in range(omega.size):
         if fan.modes[i]:
-            top = max(top, float(fan.frequency_hz(i).max()))
-    y_top = 1.1 * max(top, hi / (2 * np.pi))
-    ws = np.array([lo, hi])
+            top = max(top, float(fan.frequency_hz(i).max()) * 2.0 * np.pi / nominal)
+    y_top = 1.1 * max(top, hi / 100.0)
+    xs = np.array([lo, hi])
     for n in _REV_LINES:
-        ax_f.plot(ws, n * ws / (2 * np.pi), color="0.55", lw=0.8, ls=":", zorder=1)
-        x_end = min(0.98 * hi, 0.9 * y_top * 2 * np.pi / n)  # near where the line leaves the panel
-        ax_f.text(x_end, n * x_end / (2 * np.pi), f"{n}/rev ", color="0.35", fontsize=7.5, ha="right", va="bottom")
+        ax_f.plot(xs, n * xs / 100.0, color="0.55", lw=0.8, ls=":", zorder=1)
+        x_end = min(0.98 * hi, 0.9 * y_top * 100.0 / n)  # near where the line leaves the panel
+        ax_f.text(x_end, n * x_end / 100.0, f"{n}/rev ", color="0.35", fontsize=7.5, ha="right", va="bottom")
     # the modes: points of one hinge, oscillatory or not, joined by rank across rotor speeds
     tracks: dict[tuple, list] = {}
     for i, w in enumerate(omega):
@@ -126,19 +132,20 @@ def _draw_fan(ax_f, ax_d, fan) -> None:
     for (hinge, osc, _rank), pts in sorted(tracks.items()):
         w = np.array([p[0] for p in pts])
         colour, ls = HINGE_COLORS[hinge], HINGE_LINESTYLES[hinge]
-        f_hz = np.array([p[1].frequency for p in pts]) * w / (2 * np.pi)
+        f_rev = np.array([p[1].frequency for p in pts]) * w / nominal  # per rev of the nominal speed
         zeta = np.array([p[1].damping_ratio for p in pts])
         style = dict(color=colour, marker="o" if osc else "s", ms=4, mfc=colour if osc else "white")
+        x = 100.0 * w / nominal
         if osc:
-            ax_f.plot(w, f_hz, ls=ls, **style)
-        ax_d.plot(w, zeta, ls=ls if osc else "none", **style)
+            ax_f.plot(x, f_rev, ls=ls, **style)
+        ax_d.plot(x, zeta, ls=ls if osc else "none", **style)
     for ax in (ax_f, ax_d):
-        ax.axvline(fan.nominal_rotor_speed, color="k", lw=0.8, ls="--")
-        ax.set_xlabel(r"rotor speed $\Omega$ (rad/s)")
+        ax.axvline(100.0, color="k", lw=0.8, ls="--")
+        ax.set_xlabel(r"rotor speed $\Omega / \Omega_0$ (%)")
         ax.grid(alpha=0.3)
         ax.set_xlim(lo, hi)
     ax_f.set_ylim(0.0, y_top)
-    ax_f.set_ylabel("frequency (Hz)")
+    ax_f.set_ylabel(r"frequency (per rev at $\Omega_0$)")
     where = "hover, with air" if fan.air else "in vacuum"
     ax_f.set_title(f"(a) fan diagram, {where}", fontsize=9)
     ax_d.axhline(0.0, color="k", lw=0.8)
@@ -153,7 +160,7 @@ def _draw_fan(ax_f, ax_d, fan) -> None:
     ax_f.legend(handles=handles, fontsize=7.5, loc="upper left")
     if any(not k[1] for k in tracks):
         ax_d.legend(handles=[Line2D([], [], color="0.3", marker="s", mfc="white", ls="none", ms=4,
-                                    label="real mode (0 Hz; +1 decays, -1 grows)")],
+                                    label="real mode (+1 decays, -1 grows)")],
                     fontsize=7.5, loc="center right")
 
 
@@ -184,8 +191,8 @@ def plot_modes(fan=None, floquet=None):
     Parameters
     ----------
     fan : FanData, optional
-        Panels (a) frequency (Hz) against rotor speed (rad/s), with the n/rev lines and the
-        nominal speed, and (b) the damping ratio (squares: real modes, whose ratio is +1 decaying
+        Panels (a) frequency (per rev of the nominal rotor speed ``Omega_0``) against the rotor
+        speed (% of ``Omega_0``), with the n/rev lines and the nominal speed, and (b) the damping ratio (squares: real modes, whose ratio is +1 decaying
         or -1 growing).
     floquet : FloquetModes, optional
         Panels (c) frequency (per rev, the branch followed from hover) and (d) growth rate (per
