@@ -178,7 +178,9 @@ COLLECT = r"""
       .map(e => [e.tagName.toLowerCase(), e.getAttribute('href') ?? e.getAttribute('src')]);
   const figures = [...document.querySelectorAll('figure, div.figure')].map(f => ({
       id: f.id || (f.querySelector('[id]') || {}).id || '',
-      csv: [...f.querySelectorAll('a[href]')].map(a => a.getAttribute('href')).filter(h => /\.csv$/.test(h))}));
+      csv: [...f.querySelectorAll('a[href]')].map(a => a.getAttribute('href')).filter(h => /\.csv$/.test(h)),
+      // each image of the figure: its file and the link around it (book/_static/rotorlyap.js)
+      images: [...f.querySelectorAll('img')].map(i => [i.getAttribute('src'), i.closest('a') ? i.closest('a').getAttribute('href') : null])}));
   // what a reader sees cut off: an element of the text column wider than the column, or wider
   // than its own box (content behind a scroll bar): printed outputs, code, tables, display math
   const column = document.querySelector('article') || document.body;
@@ -538,6 +540,16 @@ def test_every_figure_links_its_data_as_csv(shown, page):
     for f in figures:
         for href in f["csv"]:
             assert "_downloads/" in href and (HTML / page).parent.joinpath(unquote(href)).is_file()
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_a_click_on_a_figure_opens_it_at_full_size(shown, page):
+    """Every image of a figure is a link to its own file (book/_static/rotorlyap.js), so that a
+    multi-panel figure shrunk to a phone's column is read at full size in a tab of its own (a
+    page without figures has nothing to check)."""
+    images = [img for f in shown.info["figures"] for img in f["images"]]
+    unlinked = [src for src, href in images if href != src]
+    assert not unlinked, f"{page}: figure images that do not open at full size: {unlinked[:5]}"
 
 
 def _png_dpi(path: Path) -> float | None:
