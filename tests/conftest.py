@@ -49,3 +49,29 @@ def kernel_pair(monkeypatch):
 
     return pair
 
+
+
+# --- the small periodic system of chapters 1 and 2 (tests of both chapters' modules) ----------
+
+@pytest.fixture(scope="session")
+def osc():
+    """The Mathieu-Duffing oscillator of chapters 1 and 2."""
+    from rotorlyap.methods.examples import mathieu_duffing
+
+    return mathieu_duffing(damping=0.4, modulation=0.3, softening=1.0)
+
+
+@pytest.fixture(scope="session")
+def osc_cert(osc):
+    """Its certificate, made once on a coarse azimuth grid (24 azimuths) to keep the tests quick."""
+    import rotorlyap
+
+    return rotorlyap.technical_stability(osc.f, osc.W, 1.0, dim=osc.dim, dW=osc.dW, n_psi=24, n_sphere=256)
+
+
+@pytest.fixture(scope="session")
+def osc_history(osc, osc_cert):
+    """Motions from three start azimuths, as chapters 1 and 2 draw them (shorter)."""
+    from rotorlyap.chapters.norm_history import norm_history_data
+
+    return norm_history_data(osc, osc_cert, [0, 6, 12], n_starts=4, n_periods=2)

@@ -2,8 +2,8 @@
 
 Each fact must be the data field it names, rounded to the digits the chapter states; each
 summary must hold those numbers; each figure function must return a finished figure of the
-book's size, closed in pyplot. The certificate is made once, on a coarse azimuth grid
-(24 azimuths), to keep the file quick.
+book's size, closed in pyplot. The oscillator, its certificate and its motions are the
+session's fixtures ``osc``, ``osc_cert`` and ``osc_history`` (tests/conftest.py).
 """
 
 from __future__ import annotations
@@ -16,30 +16,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-import rotorlyap  # noqa: E402
 from rotorlyap.chapters import algorithm  # noqa: E402
 from rotorlyap.chapters.export import figure_csv  # noqa: E402
-from rotorlyap.methods.examples import mathieu_duffing  # noqa: E402
 
 
 @pytest.fixture(scope="module")
-def toy():
-    return mathieu_duffing(damping=0.4, modulation=0.3, softening=1.0)
-
-
-@pytest.fixture(scope="module")
-def res(toy):
-    return rotorlyap.technical_stability(toy.f, toy.W, 1.0, dim=toy.dim, dW=toy.dW, n_psi=24, n_sphere=256)
-
-
-@pytest.fixture(scope="module")
-def history(toy, res):
-    return algorithm.norm_history_data(toy, res, [0, 6, 12], n_starts=4, n_periods=2)
-
-
-@pytest.fixture(scope="module")
-def levels(toy, res):
-    return algorithm.level_sets_data(toy, res, n_grid=31, extent=1.15)
+def levels(osc, osc_cert):
+    return algorithm.level_sets_data(osc, osc_cert, n_grid=31, extent=1.15)
 
 
 def _plain(value) -> bool:
@@ -48,66 +31,67 @@ def _plain(value) -> bool:
 
 # ---- the certificate (steps 1 to 6)
 
-def test_steps_facts_are_the_certificate_rounded_to_the_digits_chapter_2_quotes(res):
-    facts = algorithm.steps_facts(res)
+def test_steps_facts_are_the_certificate_rounded_to_the_digits_chapter_2_quotes(osc_cert):
+    facts = algorithm.steps_facts(osc_cert)
     assert facts == {
         "ch2_A_req": 1.0,
-        "ch2_step3": round(res.step3_max_dW, 3),
-        "ch2_A": round(res.A, 4),
-        "ch2_alpha": round(res.alpha, 4),
-        "ch2_lam_min": round(float(res.lambda0.min()), 4),
-        "ch2_lam_max": round(float(res.lambda0.max()), 4),
-        "ch2_n_stable": int(res.stable.sum()),
+        "ch2_step3": round(osc_cert.step3_max_dW, 3),
+        "ch2_A": round(osc_cert.A, 4),
+        "ch2_alpha": round(osc_cert.alpha, 4),
+        "ch2_lam_min": round(float(osc_cert.lambda0.min()), 4),
+        "ch2_lam_max": round(float(osc_cert.lambda0.max()), 4),
+        "ch2_n_stable": int(osc_cert.stable.sum()),
     }
 
 
-def test_facts_are_plain_python_numbers_so_the_glued_text_carries_no_numpy_type(res, history, levels):
-    for facts in (algorithm.steps_facts(res), levels.facts(),
-                  algorithm.max_norm_data(history).facts()):
+def test_facts_are_plain_python_numbers_so_the_glued_text_carries_no_numpy_type(osc_cert, osc_history, levels):
+    for facts in (algorithm.steps_facts(osc_cert), levels.facts(),
+                  algorithm.max_norm_data(osc_history).facts()):
         assert all(_plain(v) for v in facts.values()), facts
         assert not any("np." in repr(v) for v in facts.values())
 
 
-def test_facts_prefix_names_the_chapter_quoting_them(res):
-    assert set(algorithm.steps_facts(res, prefix="ch9")) == {
+def test_facts_prefix_names_the_chapter_quoting_them(osc_cert):
+    assert set(algorithm.steps_facts(osc_cert, prefix="ch9")) == {
         "ch9_A_req", "ch9_step3", "ch9_A", "ch9_alpha", "ch9_lam_min", "ch9_lam_max", "ch9_n_stable"}
 
 
-def test_steps_summary_holds_every_step_number(res):
-    lines = algorithm.steps_summary(res).splitlines()
-    assert lines[0] == res.message and not any("TechnicalStabilityResult" in ln for ln in lines)
-    assert lines[1] == "step 3: largest W' on ||x|| = 1.00: %.4f" % res.step3_max_dW
-    assert lines[2] == "step 3: A = %.4f;  step 4: alpha = %.5f" % (res.A, res.alpha)
-    j_min, j_max = int(np.argmin(res.lambda0)), int(np.argmax(res.lambda0))
+def test_steps_summary_holds_every_step_number(osc_cert):
+    lines = algorithm.steps_summary(osc_cert).splitlines()
+    assert lines[0] == osc_cert.message and not any("TechnicalStabilityResult" in ln for ln in lines)
+    assert lines[1] == "step 3: largest W' on ||x|| = 1.00: %.4f" % osc_cert.step3_max_dW
+    assert lines[2] == "step 3: A = %.4f;  step 4: alpha = %.5f" % (osc_cert.A, osc_cert.alpha)
+    j_min, j_max = int(np.argmin(osc_cert.lambda0)), int(np.argmax(osc_cert.lambda0))
     assert lines[3] == "step 5: lambda0 from %.4f (psi = %.0f deg) to %.4f (psi = %.0f deg)" % (
-        res.lambda0[j_min], np.degrees(res.psi[j_min]), res.lambda0[j_max], np.degrees(res.psi[j_max]))
-    assert lines[4].endswith("step 6 passes at %d of 24 azimuths" % res.stable.sum())
-    assert "%.2e" % res.max_dW.max() in lines[4]
+        osc_cert.lambda0[j_min], np.degrees(osc_cert.psi[j_min]),
+        osc_cert.lambda0[j_max], np.degrees(osc_cert.psi[j_max]))
+    assert lines[4].endswith("step 6 passes at %d of 24 azimuths" % osc_cert.stable.sum())
+    assert "%.2e" % osc_cert.max_dW.max() in lines[4]
 
 
 # ---- the largest norm per motion (of the motions of rotorlyap.chapters.norm_history)
 
-def test_max_norm_data_has_one_row_per_motion_and_the_history_s_largest_ratio(history):
-    check = algorithm.max_norm_data(history)
+def test_max_norm_data_has_one_row_per_motion_and_the_history_s_largest_ratio(osc_history):
+    check = algorithm.max_norm_data(osc_history)
     assert check.start_psi_deg.shape == check.max_norm_over_A.shape == check.start_radius_over_A.shape == (12,)
-    assert check.max_ratio == history.max_ratio
-    assert np.array_equal(np.unique(check.start_psi_deg), np.degrees(history.psi_grid[[0, 6, 12]]))
-    np.testing.assert_allclose(np.unique(check.start_radius_over_A * history.A),
-                               np.sort(history.lambda0[[0, 6, 12]]), rtol=1e-12)
-    assert check.summary() == "12 motions; largest ||x|| / A: %.3f" % history.max_ratio
-    assert check.facts() == {"ch2_max_ratio": round(history.max_ratio, 3)}
+    assert check.max_ratio == osc_history.max_ratio
+    assert np.array_equal(np.unique(check.start_psi_deg), np.degrees(osc_history.psi_grid[[0, 6, 12]]))
+    np.testing.assert_allclose(np.unique(check.start_radius_over_A * osc_history.A),
+                               np.sort(osc_history.lambda0[[0, 6, 12]]), rtol=1e-12)
+    assert check.summary() == "12 motions; largest ||x|| / A: %.3f" % osc_history.max_ratio
+    assert check.facts() == {"ch2_max_ratio": round(osc_history.max_ratio, 3)}
 
 
-def test_max_norm_csv_has_the_three_columns_one_row_per_motion(history, tmp_path):
-    text = figure_csv(algorithm.max_norm_data(history), tmp_path / "m.csv").read_text().splitlines()
+def test_max_norm_csv_has_the_three_columns_one_row_per_motion(osc_history, tmp_path):
+    text = figure_csv(algorithm.max_norm_data(osc_history), tmp_path / "m.csv").read_text().splitlines()
     assert text[0] == "start_psi_deg,max_norm_over_A,start_radius_over_A" and len(text) == 13
 
 
 # ---- level sets (chapter 2)
 
-def test_level_sets_panels_sit_at_the_smallest_start_region_and_the_tightest_shell(res, levels):
-    assert levels.smallest.psi == res.psi[np.argmin(res.lambda0)]
-    assert levels.tightest.psi == res.psi[np.argmax(res.max_dW)]
+def test_level_sets_panels_sit_at_the_smallest_start_region_and_the_tightest_shell(osc_cert, levels):
+    assert levels.smallest.psi == osc_cert.psi[np.argmin(osc_cert.lambda0)]
+    assert levels.tightest.psi == osc_cert.psi[np.argmax(osc_cert.max_dW)]
     assert levels.panels == (levels.smallest, levels.tightest)
 
 
@@ -145,15 +129,15 @@ def test_level_set_subsampled_refuses_a_step_below_one(levels):
 
 # ---- start region (chapter 2)
 
-def test_start_region_summary_quotes_lambda0_and_max_dW_a_quarter_period_apart(res):
-    region = algorithm.start_region_data(res)
+def test_start_region_summary_quotes_lambda0_and_max_dW_a_quarter_period_apart(osc_cert):
+    region = algorithm.start_region_data(osc_cert)
     lam, dw = region.summary().splitlines()
-    assert lam == f"lambda0 at psi = 0, 90, 180, 270 deg: {np.round(res.lambda0[::6], 4)}"
-    assert dw == f"max W' on the shell at psi = 0, 90, 180, 270 deg: {np.round(res.max_dW[::6], 6)}"
+    assert lam == f"lambda0 at psi = 0, 90, 180, 270 deg: {np.round(osc_cert.lambda0[::6], 4)}"
+    assert dw == f"max W' on the shell at psi = 0, 90, 180, 270 deg: {np.round(osc_cert.max_dW[::6], 6)}"
 
 
-def test_start_region_csv_has_one_row_per_azimuth(res, tmp_path):
-    text = figure_csv(algorithm.start_region_data(res), tmp_path / "s.csv").read_text().splitlines()
+def test_start_region_csv_has_one_row_per_azimuth(osc_cert, tmp_path):
+    text = figure_csv(algorithm.start_region_data(osc_cert), tmp_path / "s.csv").read_text().splitlines()
     assert text[0] == "psi_deg,lambda0,A,A_requested,max_dW" and len(text) == 25
 
 
@@ -194,12 +178,12 @@ def test_convergence_without_sampled_runs_has_no_deviation():
 
 # ---- figures
 
-def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_pyplot(res, history, levels):
+def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_pyplot(osc_cert, osc_history, levels):
     conv = _convergence(A=[0.44, 0.41, 0.40], lam_mean=[0.3, 0.29, 0.28])
     cases = [
         (algorithm.figure_level_sets(levels), (7.6, 4.2), 2),
-        (algorithm.figure_start_region(algorithm.start_region_data(res)), (7, 3.6), 2),
-        (algorithm.figure_max_norm(algorithm.max_norm_data(history)), (7, 3.4), 1),
+        (algorithm.figure_start_region(algorithm.start_region_data(osc_cert)), (7, 3.6), 2),
+        (algorithm.figure_max_norm(algorithm.max_norm_data(osc_history)), (7, 3.4), 1),
         (algorithm.figure_convergence(conv), (7, 3.8), 1),
     ]
     for fig, size, n_axes in cases:

@@ -4,8 +4,8 @@ figures.
 
 Each fact must be the data field it names, rounded to the digits the chapter states; each
 summary must hold those numbers; each figure function must return a finished figure of the
-book's size, closed in pyplot. The certificate is made once, on a coarse azimuth grid
-(24 azimuths), to keep the file quick.
+book's size, closed in pyplot. The oscillator, its certificate and its motions are the
+session's fixtures ``osc``, ``osc_cert`` and ``osc_history`` (tests/conftest.py).
 """
 
 from __future__ import annotations
@@ -17,24 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 
-import rotorlyap  # noqa: E402
 from rotorlyap.chapters import norm_history, technical_stability  # noqa: E402
-from rotorlyap.methods.examples import mathieu_duffing  # noqa: E402
-
-
-@pytest.fixture(scope="module")
-def toy():
-    return mathieu_duffing(damping=0.4, modulation=0.3, softening=1.0)
-
-
-@pytest.fixture(scope="module")
-def res(toy):
-    return rotorlyap.technical_stability(toy.f, toy.W, 1.0, dim=toy.dim, dW=toy.dW, n_psi=24, n_sphere=256)
-
-
-@pytest.fixture(scope="module")
-def history(toy, res):
-    return technical_stability.norm_history_data(toy, res, [0, 6, 12], n_starts=4, n_periods=2)
 
 
 def _plain(value) -> bool:
@@ -43,17 +26,17 @@ def _plain(value) -> bool:
 
 # ---- the certificate
 
-def test_certificate_summary_is_the_message_then_A_alpha_and_the_range_of_lambda0(res):
-    message, numbers = technical_stability.certificate_summary(res).splitlines()
-    assert message == res.message
+def test_certificate_summary_is_the_message_then_A_alpha_and_the_range_of_lambda0(osc_cert):
+    message, numbers = technical_stability.certificate_summary(osc_cert).splitlines()
+    assert message == osc_cert.message
     assert numbers == "A = %.4f, alpha = %.4f, lambda0 from %.4f to %.4f" % (
-        res.A, res.alpha, res.lambda0.min(), res.lambda0.max())
+        osc_cert.A, osc_cert.alpha, osc_cert.lambda0.min(), osc_cert.lambda0.max())
 
 
 # ---- phase portrait
 
-def test_phase_portrait_summary_gives_the_bounds_and_the_fate_of_each_outside_motion(toy, res):
-    portrait = technical_stability.phase_portrait_data(toy, res, 0, n_starts=4, n_periods=2)
+def test_phase_portrait_summary_gives_the_bounds_and_the_fate_of_each_outside_motion(osc, osc_cert):
+    portrait = technical_stability.phase_portrait_data(osc, osc_cert, 0, n_starts=4, n_periods=2)
     lines = portrait.summary().splitlines()
     assert lines[0] == "phase portrait: A = %.4f, lambda0(psi0) = %.4f" % (portrait.A, portrait.lambda0)
     assert lines[1].endswith("%.4f" % portrait.max_inside_norm)
@@ -63,30 +46,30 @@ def test_phase_portrait_summary_gives_the_bounds_and_the_fate_of_each_outside_mo
         assert line == "motion started at (y, y') = (%.2f, %.2f): %s" % (*path[0], "escapes" if esc else "bounded")
 
 
-# ---- norm history (rotorlyap.chapters.norm_history, drawn here, reduced in chapter 2)
+# ---- norm osc_history (rotorlyap.chapters.norm_history, drawn here, reduced in chapter 2)
 
-def test_norm_history_facts_are_its_fields_rounded_to_three_decimals(history):
-    assert history.facts() == {
-        "ch1_max_ratio": round(history.max_ratio, 3),
-        "ch1_A": round(history.A, 3),
-        "ch1_lam_min": round(float(history.lambda0.min()), 3),
-        "ch1_lam_max": round(float(history.lambda0.max()), 3),
+def test_norm_history_facts_are_its_fields_rounded_to_three_decimals(osc_history):
+    assert osc_history.facts() == {
+        "ch1_max_ratio": round(osc_history.max_ratio, 3),
+        "ch1_A": round(osc_history.A, 3),
+        "ch1_lam_min": round(float(osc_history.lambda0.min()), 3),
+        "ch1_lam_max": round(float(osc_history.lambda0.max()), 3),
     }
 
 
-def test_norm_history_summary_counts_the_motions_and_periods(history):
-    assert history.n_motions == 12 and history.n_periods == 2.0 and history.fraction == 0.999
-    assert history.summary() == "largest ||x|| / A over 12 motions and 2 periods: %.3f" % history.max_ratio
+def test_norm_history_summary_counts_the_motions_and_periods(osc_history):
+    assert osc_history.n_motions == 12 and osc_history.n_periods == 2.0 and osc_history.fraction == 0.999
+    assert osc_history.summary() == "largest ||x|| / A over 12 motions and 2 periods: %.3f" % osc_history.max_ratio
 
 
-def test_facts_are_plain_python_numbers_so_the_glued_text_carries_no_numpy_type(history):
-    facts = history.facts()
+def test_facts_are_plain_python_numbers_so_the_glued_text_carries_no_numpy_type(osc_history):
+    facts = osc_history.facts()
     assert all(_plain(v) for v in facts.values()), facts
     assert not any("np." in repr(v) for v in facts.values())
 
 
-def test_facts_prefix_names_the_chapter_quoting_them(history):
-    assert set(history.facts(prefix="ch2")) == {"ch2_max_ratio", "ch2_A", "ch2_lam_min", "ch2_lam_max"}
+def test_facts_prefix_names_the_chapter_quoting_them(osc_history):
+    assert set(osc_history.facts(prefix="ch2")) == {"ch2_max_ratio", "ch2_A", "ch2_lam_min", "ch2_lam_max"}
 
 
 def test_the_chapter_calls_the_shared_norm_history_data():
@@ -95,11 +78,11 @@ def test_the_chapter_calls_the_shared_norm_history_data():
 
 # ---- figures
 
-def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_pyplot(toy, res, history):
-    portrait = technical_stability.phase_portrait_data(toy, res, 0, n_starts=2, n_periods=1)
+def test_figure_functions_return_finished_figures_of_the_book_sizes_closed_in_pyplot(osc, osc_cert, osc_history):
+    portrait = technical_stability.phase_portrait_data(osc, osc_cert, 0, n_starts=2, n_periods=1)
     cases = [
         (technical_stability.figure_phase_portrait(portrait, title="t"), (6, 7), 1),
-        (technical_stability.figure_norm_history(history), (7, 3.6), 1),
+        (technical_stability.figure_norm_history(osc_history), (7, 3.6), 1),
     ]
     for fig, size, n_axes in cases:
         assert tuple(fig.get_size_inches()) == pytest.approx(size)

@@ -1,16 +1,7 @@
 """Figures of chapter 2, the algorithm: data, summaries, facts, drawings.
 
-Per figure: a data function returning a frozen dataclass of arrays (no plotting); its
-``summary()``, the rounded text the chapter prints (what nbval compares, since images are
-not); its ``facts()``, the rounded numbers the chapter's text quotes, keyed by glue name; a
-``plot_*`` function drawing the data on a matplotlib ``Axes``; and a ``figure_*`` function
-that creates the figure, draws it and returns it. A chapter's cell is then one call per step::
-
-    region = algorithm.start_region_data(res)
-    fig = algorithm.figure_start_region(region)
-    glue("fig_start_region", fig, display=False)
-    figure_csv(region, "_data/fig-start-region.csv")
-    print(region.summary())
+The conventions every chapter's module follows (data objects, ``summary()``, ``facts()``,
+``plot_*`` and ``figure_*``) are in :mod:`rotorlyap.chapters`.
 
 The chapter's figures: the level sets of ``W`` and ``W'`` (:func:`level_sets_data`), the start
 region and step 6 by azimuth (:func:`start_region_data`), the largest norm of simulated motions

@@ -2,14 +2,8 @@
 hover trim of the C.G. sweep and its aft limit, the linear modes, the algorithm in both
 readings, ``W'`` against the C.G. and where linear theory turns unstable.
 
-Data functions return frozen dataclasses of arrays (no plotting) and take their grids as
-arguments, so that the notebooks, the benchmark and the tests can choose the resolution;
-drawing functions (``plot_*``) take that data and matplotlib ``Axes``, and ``figure_*``
-functions create, draw, lay out and return the whole figure of the chapter (closed in pyplot,
-so that a notebook shows it only where it is glued). The data objects have a ``summary()``
-(the text the chapter prints, rounded to the digits the computation determines) and a
-``facts()`` (the numbers the chapter quotes, ``{glue name: value}``, for
-:func:`rotorlyap.chapters.export.glue_facts`). Every quantity computed in a reading carries
+The conventions every chapter's module follows (data objects, ``summary()``, ``facts()``,
+``plot_*`` and ``figure_*``) are in :mod:`rotorlyap.chapters`. Every quantity computed in a reading carries
 that reading's label, :data:`rotorlyap.chapters.cases.READING_LABELS`. The cases, their
 parameters and the labels shared with chapter 6 are in :mod:`rotorlyap.chapters.cases`.
 """

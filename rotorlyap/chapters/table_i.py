@@ -1,16 +1,7 @@
 """Figures, tables and printed numbers of chapter 4, Table I.
 
-One data function (returning a frozen dataclass, no plotting) and one drawing function (taking
-that data and a matplotlib ``Axes``) per figure panel, as in
-:mod:`rotorlyap.chapters.technical_stability`, and one function per figure that creates the whole
-matplotlib ``Figure`` from the data (``figure_*``). Every data object a chapter prints or quotes has
-
-* ``summary()``: the text the chapter prints, rounded to the digits the computation
-  determines (README, "What a committed output may print");
-* ``facts()``: ``{glue name: value}``, the numbers the chapter's text quotes, rounded the same
-  way (glued with :func:`rotorlyap.chapters.export.glue_facts`);
-* ``markdown()`` for a table, and ``export()`` where the CSV of a figure is not the
-  dataclass itself (:func:`rotorlyap.chapters.export.figure_csv`).
+The conventions every chapter's module follows (data objects, ``summary()``, ``facts()``,
+``plot_*`` and ``figure_*``) are in :mod:`rotorlyap.chapters`.
 
 Chapter 4, Table I:
 

@@ -1,17 +1,7 @@
 """Figures of chapter 1, the theorem of technical stability: data, summaries, facts, drawings.
 
-Per figure: a data function returning a frozen dataclass of arrays (no plotting); its
-``summary()``, the rounded text the chapter prints (what nbval compares, since images are
-not); its ``facts()``, the rounded numbers the chapter's text quotes, keyed by glue name; a
-``plot_*`` function drawing the data on a matplotlib ``Axes``; and a ``figure_*`` function
-that creates the figure, draws it and returns it. A chapter's cell is then one call per step::
-
-    history = technical_stability.norm_history_data(toy, res, [0, 18, 36, 54], n_starts=32, n_periods=8)
-    fig = technical_stability.figure_norm_history(history)
-    glue("fig_norm_history", fig, display=False)
-    figure_csv(history, "_data/fig-norm-history.csv")
-    print(history.summary())
-    glue_facts(history.facts())
+The conventions every chapter's module follows (data objects, ``summary()``, ``facts()``,
+``plot_*`` and ``figure_*``) are in :mod:`rotorlyap.chapters`.
 
 The chapter's figures: the phase portrait (:func:`phase_portrait_data`,
 :func:`figure_phase_portrait`) and the norm of motions against azimuth

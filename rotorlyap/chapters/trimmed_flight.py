@@ -8,11 +8,10 @@ paper leaves open do to the stability verdicts (inflow model, compressibility, t
 pitch-flap coupling, the pitch inertia), and tests its Fig. 8 under every combination of the
 readings it leaves open (:func:`forensic_data`).
 
-As in :mod:`rotorlyap.chapters.forward_flight`, data functions return frozen dataclasses with a
-``summary()`` (the printed text, rounded to the digits the computation determines) and a
-``facts()`` (the numbers the chapter quotes); ``figure_*`` functions return closed figures.
-Growth rates are the largest real part of the Floquet exponents, per radian of azimuth ("per
-rev" in the text, the usual unit of rotor dynamics: 1/rad of ``psi``).
+The conventions every chapter's module follows (data objects, ``summary()``, ``facts()``,
+``plot_*`` and ``figure_*``) are in :mod:`rotorlyap.chapters`. Growth
+rates are the largest real part of the Floquet exponents, per radian of azimuth ("per rev" in
+the text, the usual unit of rotor dynamics: 1/rad of ``psi``).
 """
 
 from __future__ import annotations

@@ -3,22 +3,12 @@
 against the azimuth, the regions of instability in both readings, the hover flutter check,
 the practical threshold, the sensitivity and convergence of Fig. 8, and the claims table.
 
-Data functions return frozen dataclasses of arrays (no plotting) and take their grids as
-arguments, so that the notebooks, the benchmark and the tests can choose the resolution;
-drawing functions (``plot_*``) take that data and matplotlib ``Axes``, and ``figure_*``
-functions create, draw, lay out and return the whole figure of the chapter (closed in pyplot,
-so that a notebook shows it only where it is glued). The data objects have a ``summary()``
-(the text the chapter prints, rounded to the digits the computation determines) and a
-``facts()`` (the numbers the chapter quotes, ``{glue name: value}``, for
-:func:`rotorlyap.chapters.export.glue_facts`). Every quantity computed in a reading carries
+The conventions every chapter's module follows (data objects, ``summary()``, ``facts()``,
+``plot_*`` and ``figure_*``) are in :mod:`rotorlyap.chapters`. Every quantity computed in a reading carries
 that reading's label, :data:`rotorlyap.chapters.cases.READING_LABELS`. The cases and their
 parameters, Fig. 8's grids and the energy-balanced norm scales, which chapter 5 and the
 command line share or the book cites there, are in
 :mod:`rotorlyap.chapters.cases`.
-
-Conventions (``.notes/BLADE_SPEC.md``): azimuth ``psi = 0`` with the blade pointing aft
-(over the tail), rotation counter-clockwise seen from above, so ``psi = 90 deg`` is the
-advancing side and ``psi = 270 deg`` the retreating side.
 
 The chapter's modules, whose names this package re-exports (``from rotorlyap.chapters import
 forward_flight``): :mod:`~rotorlyap.chapters.forward_flight.loads` (the unbalanced loads,

@@ -1,7 +1,7 @@
 """Figures of the chapter "Validation and beyond": a data function and a drawing function each.
 
-Data functions return frozen dataclasses (no plotting) and take their grids as arguments;
-drawing functions take that data and matplotlib ``Axes``. The chain is
+The conventions every chapter's module follows (data objects, ``summary()``, ``facts()``,
+``plot_*`` and ``figure_*``) are in :mod:`rotorlyap.chapters`. The chain is
 
 1. :func:`~rotorlyap.chapters.validation.steady.steady_motions`: the true periodic motion of
    every case at every advance ratio (:func:`rotorlyap.model.steady.periodic_motion`), computed
@@ -28,16 +28,6 @@ finer search), :func:`~rotorlyap.chapters.validation.simulations.validation_set`
 motion of the chapter), :func:`~rotorlyap.chapters.validation.motions.flutter_cycle` and
 :func:`~rotorlyap.chapters.validation.motions.far_motion` (the limit cycle and the distant
 periodic motion of the long simulations).
-
-Every data object has ``summary()``, the text the chapter prints (rounded to the digits the
-computation determines, README "What a committed output may print"), and ``facts()``, the
-numbers the chapter's text quotes, ``{glue name: rounded value}``
-(:func:`rotorlyap.chapters.export.glue_facts`). Each figure has a ``figure_*`` function that
-creates, draws and returns it (closed in pyplot, so that only its glued copy is shown), and the
-figure's data object an ``export()`` for :func:`rotorlyap.chapters.export.figure_csv`.
-
-Conventions as :mod:`rotorlyap.chapters.forward_flight`: ``psi = 0`` over the tail, ``psi = 90 deg``
-the advancing side; growth rates and frequencies per rev.
 
 The chapter's modules, whose names this package re-exports (``from rotorlyap.chapters import
 validation as fv``): :mod:`~rotorlyap.chapters.validation.common` (the cases and grids),
