@@ -13,6 +13,7 @@ import html as html_lib
 import re
 import unicodedata
 from pathlib import Path
+from urllib.parse import unquote
 
 import pytest
 import yaml
@@ -75,6 +76,22 @@ def pdf(html_root) -> Pdf:
 @pytest.fixture(scope="module")
 def pdf_text(pdf) -> list[str]:
     return pdf.text()
+
+
+def test_every_download_menu_links_the_pdf(pdf):
+    """Every page with a download menu (the book's pages and the API reference; not Sphinx's
+    index and search pages) links the PDF there (``book/_ext/pdf_download.py``), and the link
+    resolves to it (``test_html.py`` leaves these links out: the PDF is printed while it runs)."""
+    pages = {p: p.read_text(encoding="utf-8") for p in HTML.rglob("*.html")
+             if not {"_static", "_sources", "_images", "_downloads"} & set(p.relative_to(HTML).parts[:-1])}
+    pages = {p: text for p, text in pages.items() if "dropdown-download-buttons" in text}
+    assert len(pages) > 100, f"only {len(pages)} pages with a download menu"
+    missing = []
+    for page, text in pages.items():
+        refs = re.findall(r'href="([^"#?]*rotorlyap-book\.pdf)"', text)
+        if not refs or any((page.parent / unquote(r)).resolve() != PDF.resolve() for r in refs):
+            missing.append(f"{page.relative_to(HTML)}: {refs or 'no link'}")
+    assert not missing, f"{len(missing)} pages without a link to {PDF.name}: {missing[:10]}"
 
 
 def test_the_pdf_counts_its_sheets(pdf, pdf_text):
