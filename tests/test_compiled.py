@@ -209,3 +209,28 @@ def test_vectorised_atan2_is_within_two_ulp():
     ref = np.arctan2(y, x)
     assert np.all(np.abs(got - ref) <= 2.0 * np.spacing(np.abs(ref)))
     np.testing.assert_array_equal(np.signbit(got), np.signbit(ref))
+
+
+@pytest.mark.skipif(not numba_available(), reason="numba is not installed")
+def test_periodic_lyapunov_sweeps_equal_their_numpy_twins():
+    """The compiled forward and backward sweeps of the periodic Lyapunov solver
+    (rotorlyap.methods.periodic_lyapunov: the forcing carried to the period's start, and P at each
+    piece's start) give their numpy twins' matrices to round-off: the same products, summed in
+    another order."""
+    import importlib
+
+    pl = importlib.import_module("rotorlyap.methods.periodic_lyapunov")
+    rng = np.random.default_rng(3)
+    K, n = 64, 6
+    S = np.eye(n) + 0.05 * rng.normal(size=(K, n, n))
+    G = rng.normal(size=(K, n, n))
+    G = G + np.swapaxes(G, 1, 2)
+    total = pl._gramian_sum_numpy(S, G)
+    assert np.allclose(pl._gramian_sum(S, G), total, rtol=0, atol=1e-13 * np.abs(total).max())
+    P0 = rng.normal(size=(n, n))
+    P0 = P0 + P0.T
+    expected, got = np.empty((K, n, n)), np.empty((K, n, n))
+    pl._backward_sweep_numpy(S, G, P0, expected)
+    pl._backward_sweep(S, G, P0, got)
+    assert np.allclose(got, expected, rtol=0, atol=1e-13 * np.abs(expected).max())
+    assert np.array_equal(got, np.swapaxes(got, 1, 2))  # symmetric by construction

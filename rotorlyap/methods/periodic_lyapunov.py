@@ -494,6 +494,85 @@ def _pieces(sys: _System, period: float, Q: np.ndarray, method: str, K: int,
     return S, G, trace_integral
 
 
+def _gramian_sum_numpy(S: np.ndarray, G: np.ndarray) -> np.ndarray:
+    """``sum_j Phi_j^T G_j Phi_j`` with ``Phi_0 = I``, ``Phi_{j+1} = S_j Phi_j``: the pieces'
+    forcing carried to the start of the period (the numpy twin of :func:`_gramian_sum`)."""
+    n = S.shape[1]
+    Phi = np.eye(n)
+    total = np.zeros((n, n))
+    for j in range(S.shape[0]):
+        total += Phi.T @ G[j] @ Phi
+        Phi = S[j] @ Phi
+    return total
+
+
+@jit
+def _gramian_sum(S, G):
+    """:func:`_gramian_sum_numpy` compiled (one piece after the other; the small products in
+    loops, measured 50 ms -> under 1 ms for 1024 pieces of a 6-state system)."""
+    K, n = S.shape[0], S.shape[1]
+    Phi = np.eye(n)
+    nxt = np.empty((n, n))
+    tmp = np.empty((n, n))
+    total = np.zeros((n, n))
+    for j in range(K):
+        for a in range(n):
+            for b in range(n):
+                acc = 0.0
+                for k in range(n):
+                    acc += G[j, a, k] * Phi[k, b]
+                tmp[a, b] = acc
+        for a in range(n):
+            for b in range(n):
+                acc = 0.0
+                for k in range(n):
+                    acc += Phi[k, a] * tmp[k, b]
+                total[a, b] += acc
+        for a in range(n):
+            for b in range(n):
+                acc = 0.0
+                for k in range(n):
+                    acc += S[j, a, k] * Phi[k, b]
+                nxt[a, b] = acc
+        Phi[:, :] = nxt
+    return total
+
+
+def _backward_sweep_numpy(S: np.ndarray, G: np.ndarray, P0: np.ndarray, out: np.ndarray) -> None:
+    """``out[j] = sym(S_j^T P_{j+1} S_j + G_j)`` from ``P_K = P0`` down to ``j = 0``: ``P`` at the
+    start of each piece (the numpy twin of :func:`_backward_sweep`)."""
+    Pnext = P0
+    for j in range(S.shape[0] - 1, -1, -1):
+        X = S[j].T @ Pnext @ S[j] + G[j]
+        Pnext = out[j] = 0.5 * (X + X.T)  # _symmetric of one matrix, without its call
+
+
+@jit
+def _backward_sweep(S, G, P0, out):
+    """:func:`_backward_sweep_numpy` compiled."""
+    K, n = S.shape[0], S.shape[1]
+    Pnext = P0.copy()
+    tmp = np.empty((n, n))
+    X = np.empty((n, n))
+    for j in range(K - 1, -1, -1):
+        for a in range(n):
+            for b in range(n):
+                acc = 0.0
+                for k in range(n):
+                    acc += Pnext[a, k] * S[j, k, b]
+                tmp[a, b] = acc
+        for a in range(n):
+            for b in range(n):
+                acc = G[j, a, b]
+                for k in range(n):
+                    acc += S[j, k, a] * tmp[k, b]
+                X[a, b] = acc
+        for a in range(n):
+            for b in range(n):
+                out[j, a, b] = 0.5 * (X[a, b] + X[b, a])
+        Pnext[:, :] = out[j]
+
+
 def _grid_values(sys: _System, period: float, Q: np.ndarray, S, G, trace_integral: float,
                  method: str, tol: float, count0: int):
     """Stability check, ``P0`` and the backward sweep: ``(floquet, P_grid, periodicity)``."""
@@ -507,17 +586,13 @@ def _grid_values(sys: _System, period: float, Q: np.ndarray, S, G, trace_integra
         raise NotAsymptoticallyStableError(_unstable_message(res), spectral_radius=float(res.spectral_radius),
                                            growth_rate=float(np.max(res.exponents.real)))
     n, K = sys.n, S.shape[0]
-    Phi = np.eye(n)
-    Gtot = np.zeros((n, n))
-    for j in range(K):
-        Gtot += Phi.T @ G[j] @ Phi
-        Phi = S[j] @ Phi
+    compiled = use_compiled()
+    S = np.ascontiguousarray(S, dtype=float)
+    G = np.ascontiguousarray(G, dtype=float)
+    Gtot = _gramian_sum(S, G) if compiled else _gramian_sum_numpy(S, G)
     P0 = _symmetric(solve_discrete_lyapunov(M.T, Gtot))
     P_grid = np.empty((K, n, n))
-    Pnext = P0
-    for j in range(K - 1, -1, -1):
-        X = S[j].T @ Pnext @ S[j] + G[j]
-        Pnext = P_grid[j] = 0.5 * (X + X.T)  # _symmetric of one matrix, without its call
+    (_backward_sweep if compiled else _backward_sweep_numpy)(S, G, np.ascontiguousarray(P0), P_grid)
     periodicity_error = float(np.max(np.abs(P_grid[0] - P0)) / np.max(np.abs(P0)))
     P_grid[0] = P0
     return res, P_grid, periodicity_error

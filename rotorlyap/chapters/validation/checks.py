@@ -69,12 +69,13 @@ class SearchCheck:
         return rel.max(axis=1)
 
     def summary(self) -> str:
-        """One line per check: certified ``A``, smallest ``lambda0`` (four decimals) and stable
-        azimuths, scan -> more directions -> more iterations."""
+        """One line per check: certified ``A``, smallest ``lambda0`` (three digits: the engine
+        finds the bound to :data:`rotorlyap.methods.lyapunov.BOUND_RTOL`) and stable azimuths,
+        scan -> more directions -> more iterations."""
         arrow = lambda v, fmt: " -> ".join(format(x, fmt) for x in v.tolist())  # noqa: E731
         head = f"scan -> n_sphere {self.n_sphere} -> n_iter {self.n_iter}"
         return "\n".join([head] + [
-            f"{key:14s} mu = {mu:4.2f}: A {arrow(a, '.4f')}, min lambda0 {arrow(lam, '.4f')}, "
+            f"{key:14s} mu = {mu:4.2f}: A {arrow(a, '#.3g')}, min lambda0 {arrow(lam, '#.3g')}, "
             f"azimuths {arrow(n, 'd')}"
             for key, mu, a, lam, n in zip(self.keys, self.mu_values, self.A, self.min_lambda0,
                                           self.n_stable.astype(int))])
