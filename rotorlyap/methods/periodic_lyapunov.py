@@ -507,33 +507,33 @@ def _gramian_sum_numpy(S: np.ndarray, G: np.ndarray) -> np.ndarray:
 
 
 @jit
+def _product(X, Y, out, transpose_x):
+    """``out = X @ Y``, or ``X^T @ Y`` with ``transpose_x``, for small square matrices (loops:
+    no call into BLAS per piece)."""
+    n = out.shape[0]
+    for a in range(n):
+        for b in range(n):
+            acc = 0.0
+            for k in range(n):
+                acc += (X[k, a] if transpose_x else X[a, k]) * Y[k, b]
+            out[a, b] = acc
+
+
+@jit
 def _gramian_sum(S, G):
-    """:func:`_gramian_sum_numpy` compiled (one piece after the other; the small products in
-    loops, measured 50 ms -> under 1 ms for 1024 pieces of a 6-state system)."""
+    """:func:`_gramian_sum_numpy` compiled (one piece after the other; measured 14 ms -> under
+    1 ms for 1024 pieces of a 6-state system)."""
     K, n = S.shape[0], S.shape[1]
     Phi = np.eye(n)
     nxt = np.empty((n, n))
     tmp = np.empty((n, n))
+    term = np.empty((n, n))
     total = np.zeros((n, n))
     for j in range(K):
-        for a in range(n):
-            for b in range(n):
-                acc = 0.0
-                for k in range(n):
-                    acc += G[j, a, k] * Phi[k, b]
-                tmp[a, b] = acc
-        for a in range(n):
-            for b in range(n):
-                acc = 0.0
-                for k in range(n):
-                    acc += Phi[k, a] * tmp[k, b]
-                total[a, b] += acc
-        for a in range(n):
-            for b in range(n):
-                acc = 0.0
-                for k in range(n):
-                    acc += S[j, a, k] * Phi[k, b]
-                nxt[a, b] = acc
+        _product(G[j], Phi, tmp, False)
+        _product(Phi, tmp, term, True)
+        total += term
+        _product(S[j], Phi, nxt, False)
         Phi[:, :] = nxt
     return total
 
@@ -555,12 +555,7 @@ def _backward_sweep(S, G, P0, out):
     tmp = np.empty((n, n))
     X = np.empty((n, n))
     for j in range(K - 1, -1, -1):
-        for a in range(n):
-            for b in range(n):
-                acc = 0.0
-                for k in range(n):
-                    acc += Pnext[a, k] * S[j, k, b]
-                tmp[a, b] = acc
+        _product(Pnext, S[j], tmp, False)
         for a in range(n):
             for b in range(n):
                 acc = G[j, a, b]
