@@ -376,7 +376,7 @@ indexes' too; by default only of the book's own pages (:func:`screenshot_wanted`
 
 def screenshot_wanted(page) -> bool:
     """Whether :func:`render` saves a screenshot of ``page``: the book's own pages always, the
-    API reference and the indexes (generated from docstrings, 118 of the 131 pages) only with
+    API reference and the indexes (generated from docstrings, 113 of the 131 pages) only with
     :data:`SCREENSHOT_ALL`. A screenshot is for a person to look at and checks nothing the page's
     tests do not; it took more than half of the browser test's time (measured 2026-12-05: 128 s
     of 220 s for the 262 page loads, against 80 s loading and 11 s checking)."""
