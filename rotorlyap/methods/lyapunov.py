@@ -1133,7 +1133,7 @@ a search of the band over the period; the search stops there instead of after ``
 halvings of a twelfth of ``A1`` (a relative precision of 2e-5 that no printed digit shows).
 The near misses just inside ``A1`` are tried first, from step 3's resolution up: where (h) fails
 only on the sphere ``A1`` itself the bound is then ``A1`` less that resolution, as before, in two
-band searches instead of fourteen. Measured 2026-12-05: chapter 7's scan 97 s -> 77 s on
+band searches instead of fourteen. Measured 2026-12-06: chapter 7's scan 97 s -> 77 s on
 two cores, its cells of the quadratic function about the periodic motion at mu = 0.2 11 s -> 5-6
 s; every verdict the same, the bounds within -0.1 % and +0.5 % of the finer search's (the band
 changes with its bound, so (h) need not fail at every bound above one where it fails)."""
