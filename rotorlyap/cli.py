@@ -350,6 +350,10 @@ def _add_certify(sub) -> None:
     _function_option(c, "auto", "the Liapunov function: auto (default: the quadratic function and the augmented "
                                 "energy, the larger certificate; tens of seconds), quadratic (seconds, the linear "
                                 "range), energy (the augmented energy), polynomial")
+    c.add_argument("--design", choices=("default", "thorough"), default="default",
+                   help="the design program's effort for a designed function: default (tens of seconds in "
+                        "forward flight), thorough (more counterexample rounds and bisection steps: larger "
+                        "start regions, minutes; how the book's certificate files are made)")
     c.add_argument("--verify", action="store_true",
                    help="also prove the certificate's own function by ball arithmetic (rotorlyap.certify("
                         "verify=True)): seconds in hover, minutes in forward flight; adds 'proof' and "
@@ -746,7 +750,7 @@ def _certify(args) -> int:
           file=sys.stderr, flush=True)
     with listening(_progress_listener()):
         cert = certify(params, args.mu, condition=args.condition, function=function, A=args.A, scales=scales,
-                       n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify)
+                       n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify, design=args.design)
     data = certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere)
     if args.plot is not None:
         from .chapters.blade_commands import plot_certificate

@@ -324,6 +324,14 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
         d["claims"]["lambda0"][5] *= 1.5
 
     assert "start" in _failing(rotorlyap.verify(_edited(path, tmp_path, one_ball)))
+    # the design's effort is recorded for the reader and read back; an unknown one is refused by name
+    assert stored.data["function"]["design"]["effort"] == "default" == stored.function.effort
+
+    def unknown_effort(d):
+        d["function"]["design"]["effort"] = "heroic"
+
+    with pytest.raises(CertificateFileError, match="function.design.effort.*'default', 'thorough'"):
+        read_certificate(_edited(path, tmp_path, unknown_effort))
 
 
 @pytest.mark.slow

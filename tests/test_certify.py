@@ -66,3 +66,13 @@ def test_certify_refuses_an_unknown_condition():
 def test_certify_refuses_an_unknown_function():
     with pytest.raises(ValueError, match="function must be one of"):
         certify(BladeParameters.table_i("forward"), 0.0, function="cubic")
+
+
+def test_certify_and_the_design_refuse_an_unknown_design_effort():
+    """The efforts allowed are named in the error, before any work (certify) or design."""
+    from rotorlyap.analysis.nonlinear_functions import designed_function
+
+    with pytest.raises(ValueError, match=r"design must be one of \('default', 'thorough'\), got 'heroic'"):
+        certify(BladeParameters.table_i("forward"), 0.0, design="heroic")
+    with pytest.raises(ValueError, match=r"effort must be one of \('default', 'thorough'\)"):
+        designed_function(Blade(BladeParameters.table_i("forward"), 0.0), None, "energy", effort="heroic")

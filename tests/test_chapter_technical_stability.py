@@ -29,7 +29,7 @@ def _plain(value) -> bool:
 def test_certificate_summary_is_the_message_then_A_alpha_and_the_range_of_lambda0(osc_cert):
     message, numbers = technical_stability.certificate_summary(osc_cert).splitlines()
     assert message == osc_cert.message
-    assert numbers == "A = %.4f, alpha = %.4f, lambda0 from %.4f to %.4f" % (
+    assert numbers == "A = %.4f, alpha = %.4f, lambda0 from %.3g to %.3g" % (
         osc_cert.A, osc_cert.alpha, osc_cert.lambda0.min(), osc_cert.lambda0.max())
 
 
@@ -38,7 +38,7 @@ def test_certificate_summary_is_the_message_then_A_alpha_and_the_range_of_lambda
 def test_phase_portrait_summary_gives_the_bounds_and_the_fate_of_each_outside_motion(osc, osc_cert):
     portrait = technical_stability.phase_portrait_data(osc, osc_cert, 0, n_starts=4, n_periods=2)
     lines = portrait.summary().splitlines()
-    assert lines[0] == "phase portrait: A = %.4f, lambda0(psi0) = %.4f" % (portrait.A, portrait.lambda0)
+    assert lines[0] == "phase portrait: A = %.4f, lambda0(psi0) = %.3g" % (portrait.A, portrait.lambda0)
     assert lines[1].endswith("%.4f" % portrait.max_inside_norm)
     assert portrait.max_inside_norm < portrait.lambda0  # unit scales: the theorem, in the plane
     assert len(lines) == 2 + len(portrait.outside)

@@ -141,3 +141,28 @@ def test_van_der_pol_certificates_grow_with_degree_and_stay_inside_the_limit_cyc
         assert np.all(sim.max_norm <= res.A)
     assert radii[0] < radii[1] < radii[2]
     assert radii[0] > 0.5
+
+
+def test_largest_design_bisects_below_a_start_radius_whose_thorough_design_fails(monkeypatch):
+    """With a program that meets every start radius up to 3.5 in its search rounds but only up to
+    2.5 thoroughly (a stand-in for ``design``, so that the order of the attempts is what is
+    tested): the largest success, 3.2, fails thoroughly; without ``bisect_below`` the next largest,
+    1.6, is returned; with it, three bisection steps between 1.6 and 3.2 (2.26 passes thoroughly,
+    2.69 does not, 2.47 does) return a start radius that passes thoroughly within their resolution
+    (a factor 2 ** (1 / 8)) of the largest that does, and never try above 3.2 again."""
+    import rotorlyap.methods.scenario as scenario
+
+    def fake(basis, f, scales, A, lam, thorough=False, **options):
+        ok = lam <= (2.5 if thorough else 3.5)
+        return scenario.Design(function=None, lam=lam, A=A, margin=1.0 if ok else -1.0, feasible=ok, rounds=1,
+                               n_constraints=0)
+
+    monkeypatch.setattr(scenario, "design", fake)
+    plain = largest_design(None, None, ONES, lam_start=0.1, lam_max=50.0, ratios=(2.5,))
+    below = largest_design(None, None, ONES, lam_start=0.1, lam_max=50.0, ratios=(2.5,), bisect_below=True)
+    assert plain.feasible and plain.lam == pytest.approx(1.6)
+    assert below.feasible and 2.5 / 2 ** (1 / 8) < below.lam <= 2.5
+    hardened = [lam for lam, A, ok in below.tried[below.tried.index((3.2, 8.0, False)):]]
+    assert max(hardened) == pytest.approx(3.2) and min(hardened) >= 1.6
+    assert len(below.tried) == len(plain.tried) + 2 * 3 - 1  # three bisection steps (search + thorough
+    # where the search passes), less the thorough design of 1.6, which the bisection makes needless

@@ -86,7 +86,7 @@ from ..model.parameters import BladeParameters
 from ..model.steady import SteadyMotion, TabulatedMotion, disturbed_rhs
 from ..reporting import format_small
 from .functions import QuadraticFunction
-from .nonlinear_functions import (FAMILIES, DesignedFunction, energy_basis, energy_reference, is_autonomous,
+from .nonlinear_functions import (DESIGN_EFFORTS, FAMILIES, DesignedFunction, energy_basis, energy_reference, is_autonomous,
                                   polynomial_basis)
 from .stability import psi_free_system
 
@@ -225,7 +225,7 @@ def _designed_json(fun: DesignedFunction) -> dict:
             "degrees": sorted({_degree(n) for n in monomials}), "names": names,
             "coefficients": _floats(bf.coefficients),
             "design": {"lam": float(d.lam), "A": float(d.A), "margin": float(d.margin), "feasible": bool(d.feasible),
-                       "rounds": int(d.rounds), "n_constraints": int(d.n_constraints),
+                       "rounds": int(d.rounds), "n_constraints": int(d.n_constraints), "effort": fun.effort,
                        "tried": [[float(lam), float(A), bool(ok)] for lam, A, ok in d.tried]}}
     if fun.family == "energy":
         data["energy_reference"] = energy_reference(fun.blade, fun.steady, scales=fun.scales)
@@ -573,8 +573,11 @@ def _read_designed(r: _Fields, fun: dict, family: str, blade: Blade, steady: Ste
                     feasible=bool(r.get(d, "feasible", "function.design")),
                     rounds=r.integer(d, "rounds", "function.design"),
                     n_constraints=r.integer(d, "n_constraints", "function.design"))
+    effort = d.get("effort", "default")  # a file written before efforts were recorded: the default's
+    if effort not in DESIGN_EFFORTS:
+        raise r.fail("function.design.effort", f"must be one of {tuple(DESIGN_EFFORTS)}, got {effort!r}")
     return DesignedFunction(blade=blade, steady=steady, family=family, design=design, scales=a,
-                            autonomous=is_autonomous(blade, steady), label=bf.label)
+                            autonomous=is_autonomous(blade, steady), label=bf.label, effort=effort)
 
 
 def read_certificate(path: str | Path) -> StoredCertificate:

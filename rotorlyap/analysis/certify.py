@@ -52,7 +52,7 @@ from ..progress import report
 from ..model.steady import refine_motion, tabulate_motion
 from .floquet import blade_floquet
 from .functions import quadratic_function
-from .nonlinear_functions import FAMILIES, designed_function
+from .nonlinear_functions import DESIGN_EFFORTS, FAMILIES, designed_function
 from .proof import prove_blade
 from .stability import blade_stability
 
@@ -251,7 +251,7 @@ class Certificate:
 
 def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", function: str = "auto",
             A: float | None = None, scales=None, n_psi: int = 36, Q=None, verify: bool = False,
-            refine: bool | None = None,
+            refine: bool | None = None, design: str = "default",
             **engine_options) -> Certificate:
     """Certify technical stability of the blade's trimmed steady motion at ``mu``.
 
@@ -297,6 +297,11 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         Default: with ``verify`` only. A certificate to be
         saved as a file (:meth:`Certificate.save`) is best made about the refined motion, whose
         table :func:`rotorlyap.verify` finds to solve the equations.
+    design : str
+        The design program's effort for a designed function, a key of
+        :data:`rotorlyap.analysis.nonlinear_functions.DESIGN_EFFORTS`: ``"default"``, or
+        ``"thorough"`` (more counterexample rounds and bisection steps: larger start regions where
+        the default's rounds run out, in minutes instead of tens of seconds in forward flight).
     **engine_options
         Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ...).
 
@@ -307,7 +312,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     Raises
     ------
     ValueError
-        Unknown ``condition`` or ``function``, bad ``mu`` (from the trim).
+        Unknown ``condition``, ``function`` or ``design``, bad ``mu`` (from the trim).
     rotorlyap.errors.TrimError
         If the trim does not converge.
     """
@@ -315,6 +320,8 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         raise ValueError(f"condition must be one of {TRIM_TARGETS}, got {condition!r}")
     if function not in FUNCTIONS:
         raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
+    if design not in DESIGN_EFFORTS:
+        raise ValueError(f"design must be one of {tuple(DESIGN_EFFORTS)}, got {design!r}")
     report(f"trim ({condition}, mu = {float(mu):g})")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
@@ -343,7 +350,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
             if family == "quadratic":
                 functions.append(quadratic_function(blade, st, Q, scales=a))
             else:
-                functions.append(designed_function(blade, st, family, scales=a))
+                functions.append(designed_function(blade, st, family, scales=a, effort=design))
                 if not functions[-1].designed:
                     raise _NotDesigned(functions[-1])
             return functions[-1]

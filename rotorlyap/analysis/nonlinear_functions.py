@@ -54,7 +54,7 @@ from ..model.blade import Blade
 from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
 from .functions import EnergyFunction, energy_function
 
-__all__ = ["FAMILIES", "LAM_MAX", "LAM_START", "N_BISECT", "RATIOS", "DesignedFunction", "designed_function",
+__all__ = ["DESIGN_EFFORTS", "FAMILIES", "LAM_MAX", "LAM_START", "N_BISECT", "RATIOS", "DesignedFunction", "designed_function",
            "energy_basis", "energy_reference", "is_autonomous",
            "mode_directions", "polynomial_basis"]
 
@@ -70,6 +70,24 @@ LAM_START, LAM_MAX, RATIOS = 0.1, 20.0, (2.5, 4.0, 8.0, 16.0, 32.0)
 #: halve the factor 2 of the growth twice (the start radius to within 19 %); a third step costs
 #: a quarter of the trimmed helicopter's design time for 9 % more radius at most.
 N_BISECT = 2
+
+#: The design program's efforts, by name: the options :func:`designed_function` passes on to
+#: :func:`rotorlyap.methods.scenario.largest_design` and :func:`~rotorlyap.methods.scenario.design`.
+#: ``"default"`` is the package's own (the default :func:`rotorlyap.certify`: tens of seconds in
+#: forward flight). ``"thorough"`` runs twice the counterexample rounds of each design (16) and of
+#: each thorough design (40 instead of 12), a bisection step more (3), and a bisection below a start
+#: radius whose thorough design failed (``bisect_below``): minutes in forward flight, for the
+#: certificate files the book ships (``tools/make_certificates.py``). The rounds are what the larger
+#: start radii need: the program stops a design whose rounds have squeezed its margin, and with few
+#: rounds a thorough design of a start radius the program can meet runs out of them. Measured
+#: 2026-12-06 on the trimmed helicopter in chapter 11's norms (without refining the periodic
+#: motion): at mu = 0.1 start radius 3.0 -> 3.6, the least reach of the start set along a hinge 14 %
+#: -> 18 % of the simulated region; at mu = 0.2 2.1 -> 2.5, 9.6 % -> 13 %; 85 s -> 114 s and 83 s
+#: -> 182 s from a warm interpreter.
+DESIGN_EFFORTS: dict[str, dict] = {
+    "default": {},
+    "thorough": {"rounds": 16, "harden_rounds": 40, "n_bisect": 3, "bisect_below": True},
+}
 
 
 def is_autonomous(blade: Blade, steady: SteadyMotion) -> bool:
@@ -216,6 +234,8 @@ class DesignedFunction:
         The disturbed blade does not depend on the azimuth (:func:`is_autonomous`).
     label : str
         Name for tables and legends.
+    effort : str
+        The design program's effort, a key of :data:`DESIGN_EFFORTS`.
     """
 
     blade: Blade
@@ -225,6 +245,7 @@ class DesignedFunction:
     scales: np.ndarray
     autonomous: bool
     label: str
+    effort: str = "default"
 
     @property
     def function(self) -> BasisFunction:
@@ -261,7 +282,8 @@ class DesignedFunction:
 
 def designed_function(blade: Blade, steady=None, family: str = "energy", *, scales=None,
                       harmonics: int | None = None, lam_start: float = LAM_START, lam_max: float = LAM_MAX,
-                      ratios=RATIOS, label: str | None = None, **design_options) -> DesignedFunction:
+                      ratios=RATIOS, label: str | None = None, effort: str = "default",
+                      **design_options) -> DesignedFunction:
     """Design a Liapunov function of ``family`` for the blade about its steady motion.
 
     The scenario program (:func:`rotorlyap.methods.scenario.largest_design`) searches the largest
@@ -285,6 +307,9 @@ def designed_function(blade: Blade, steady=None, family: str = "energy", *, scal
         Ratios ``A / lam`` tried at each start radius.
     label : str, optional
         Name for tables (default: the family's).
+    effort : str
+        The design program's effort, a key of :data:`DESIGN_EFFORTS` (its options, which
+        ``design_options`` override).
     **design_options
         Passed on to :func:`rotorlyap.methods.scenario.largest_design` (``n_bisect``, default
         :data:`N_BISECT`) and :func:`rotorlyap.methods.scenario.design` (``n_samples``,
@@ -298,10 +323,13 @@ def designed_function(blade: Blade, steady=None, family: str = "energy", *, scal
     Raises
     ------
     ValueError
-        An unknown family, bad scales or harmonics.
+        An unknown family or effort, bad scales or harmonics.
     """
     if family not in FAMILIES:
         raise ValueError(f"family must be one of {FAMILIES}, got {family!r}")
+    if effort not in DESIGN_EFFORTS:
+        raise ValueError(f"effort must be one of {tuple(DESIGN_EFFORTS)}, got {effort!r}")
+    design_options = {**DESIGN_EFFORTS[effort], **design_options}
     a = _check_scales(scales)
     steady = as_steady_motion(steady, blade)
     autonomous = is_autonomous(blade, steady)
@@ -314,4 +342,4 @@ def designed_function(blade: Blade, steady=None, family: str = "energy", *, scal
     d = largest_design(basis, f, a, lam_start=lam_start, lam_max=lam_max, ratios=ratios,
                        period=TWO_PI, periodic=not autonomous, label=name, **design_options)
     return DesignedFunction(blade=blade, steady=steady, family=family, design=d, scales=a,
-                            autonomous=autonomous, label=name)
+                            autonomous=autonomous, label=name, effort=effort)

@@ -49,13 +49,14 @@ def certificate_summary(result: TechnicalStabilityResult) -> str:
     Returns
     -------
     str
-        ``A``, ``alpha`` and ``lambda0`` (scaled norm and units of ``W``, dimensionless here)
-        to four decimals.
+        ``A`` and ``alpha`` (scaled norm and units of ``W``, dimensionless here) to four
+        decimals, ``lambda0`` to three significant digits (a start radius searched where ``W`` has
+        no closed form is determined to 0.1 %, :data:`rotorlyap.methods.lyapunov.BOUND_RTOL`).
     """
     return (
         f"{result.message}\n"
         f"A = {result.A:.4f}, alpha = {result.alpha:.4f}, "
-        f"lambda0 from {np.min(result.lambda0):.4f} to {np.max(result.lambda0):.4f}"
+        f"lambda0 from {np.min(result.lambda0):.3g} to {np.max(result.lambda0):.3g}"
     )
 
 
@@ -95,10 +96,11 @@ class PhasePortraitData:
         return float(np.sqrt((self.inside**2).sum(axis=2)).max())
 
     def summary(self) -> str:
-        """``A`` and ``lambda0(psi0)``, the largest norm reached from inside (four decimals), and
+        """``A`` and the largest norm reached from inside (four decimals), ``lambda0(psi0)`` (three
+        significant digits, as :func:`certificate_summary`), and
         for each motion started outside ``A`` its start (two decimals) and whether it escaped."""
         lines = [
-            "phase portrait: A = %.4f, lambda0(psi0) = %.4f" % (self.A, self.lambda0),
+            "phase portrait: A = %.4f, lambda0(psi0) = %.3g" % (self.A, self.lambda0),
             "largest norm of the motions started inside lambda0: %.4f" % self.max_inside_norm,
         ]
         for path, esc in zip(self.outside, self.outside_escaped):

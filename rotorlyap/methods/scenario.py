@@ -647,7 +647,8 @@ class _Program:
 
 def largest_design(basis: Basis, f: Function, scales, *, lam_start: float, lam_max: float,
                    ratios: Sequence[float] = (2.5, 3.5), growth: float = 2.0, n_bisect: int = 3,
-                   lam_min: float | None = None, harden_rounds: int = 12, **options) -> Design:
+                   lam_min: float | None = None, harden_rounds: int = 12, bisect_below: bool = False,
+                   **options) -> Design:
     """The largest start radius ``lam`` for which :func:`design` succeeds, with ``A = ratio lam``.
 
     From ``lam_start``, grows ``lam`` by ``growth`` while some ratio succeeds (up to ``lam_max``;
@@ -656,8 +657,11 @@ def largest_design(basis: Basis, f: Function, scales, *, lam_start: float, lam_m
     returned is a thorough one). If that passes, ``n_bisect`` geometric bisection steps between
     it and the first failure follow, each success designed thoroughly at once and kept where
     that passes; if it fails, the next largest successes are designed thoroughly, largest first
-    (four in all), and the first that passes is returned, without the bisection (it would only
-    search above a start radius whose thorough design already failed). ``feasible=False`` if no
+    (four in all), and the first that passes is returned, without the bisection above it (it would
+    only search above a start radius whose thorough design already failed); with ``bisect_below``,
+    ``n_bisect`` geometric bisection steps between the next largest success and the start radius
+    whose thorough design failed come first, each success designed thoroughly at once (the next
+    largest successes follow only if none passes). ``feasible=False`` if no
     thorough design passes; every attempt is in ``tried``. The first ``lam`` tries every ratio,
     smallest first; later ones the ratio that succeeded last and its two neighbours in
     ``ratios``.
@@ -683,6 +687,8 @@ def largest_design(basis: Basis, f: Function, scales, *, lam_start: float, lam_m
         Smallest start radius tried when shrinking (default ``lam_start / 1000``).
     harden_rounds : int
         Rounds of counterexamples of the thorough designs at the end.
+    bisect_below : bool
+        Where the largest success fails thoroughly, bisect below it (above).
     **options
         Passed on to :func:`design`.
 
@@ -741,9 +747,20 @@ def largest_design(basis: Basis, f: Function, scales, *, lam_start: float, lam_m
         return h if h.feasible else None
 
     hardened = harden(best)
-    if hardened is None:  # the largest success fails thoroughly: the next largest, largest first
+    if hardened is None:  # the largest success fails thoroughly
         successes = sorted({(l_, A_) for l_, A_, ok in tried[:-1] if ok and l_ < best.lam}, reverse=True)
-        for lam_, A_ in successes[:3]:
+        if successes and bisect_below:  # between the next largest success and it, each hardened
+            lo, hi = successes[0][0], best.lam
+            for _ in range(n_bisect):
+                mid = np.sqrt(lo * hi)
+                d = attempt(mid)
+                h = harden(d) if d is not None else None
+                if h is None:
+                    hi = mid
+                else:
+                    hardened, lo = h, mid
+        # none of it passes: the next largest successes, largest first
+        for lam_, A_ in (successes[:3] if hardened is None else ()):
             h = design(basis, f, scales, A_, lam_, **thorough)
             tried.append((float(lam_), float(A_), h.feasible))
             if h.feasible:
