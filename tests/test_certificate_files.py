@@ -324,8 +324,12 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
         d["claims"]["lambda0"][5] *= 1.5
 
     assert "start" in _failing(rotorlyap.verify(_edited(path, tmp_path, one_ball)))
-    # the design's effort is recorded for the reader and read back; an unknown one is refused by name
+    # the design's effort is recorded for the reader and read back (and told by the command line's
+    # JSON); an unknown one is refused by name
     assert stored.data["function"]["design"]["effort"] == "default" == stored.function.effort
+    from rotorlyap.cli import certificate_json
+
+    assert certificate_json(cert, {"params": "Table I", "cg": "forward"}, n_psi=8, n_sphere=1024)["design"] == "default"
 
     def unknown_effort(d):
         d["function"]["design"]["effort"] = "heroic"

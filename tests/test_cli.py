@@ -287,6 +287,7 @@ def test_the_progress_bar_on_a_terminal_is_a_tqdm_bar_ending_at_the_total():
         (["analyse", "--mu", "3.5"], "--mu must lie in [0, 3]"),
         (["analyse", "--mu", "fast"], "--mu must be a number"),
         (["analyse", "--cg", "middle"], "invalid choice: 'middle'"),
+        (["certify", "--design", "heroic"], "invalid choice: 'heroic' (choose from 'default', 'thorough')"),
         (["analyse", "--A", "-1"], "--A must lie in (0, 1000]"),
         (["analyse", "--scales", "1 2 3"], "--scales must be 6 positive numbers"),
         (["analyse", "--n-psi", "0"], "--n-psi must be an integer >= 1"),

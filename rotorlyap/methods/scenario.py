@@ -746,28 +746,8 @@ def largest_design(basis: Basis, f: Function, scales, *, lam_start: float, lam_m
         tried.append((float(d_.lam), float(d_.A), h.feasible))
         return h if h.feasible else None
 
-    hardened = harden(best)
-    if hardened is None:  # the largest success fails thoroughly
-        successes = sorted({(l_, A_) for l_, A_, ok in tried[:-1] if ok and l_ < best.lam}, reverse=True)
-        if successes and bisect_below:  # between the next largest success and it, each hardened
-            lo, hi = successes[0][0], best.lam
-            for _ in range(n_bisect):
-                mid = np.sqrt(lo * hi)
-                d = attempt(mid)
-                h = harden(d) if d is not None else None
-                if h is None:
-                    hi = mid
-                else:
-                    hardened, lo = h, mid
-        # none of it passes: the next largest successes, largest first
-        for lam_, A_ in (successes[:3] if hardened is None else ()):
-            h = design(basis, f, scales, A_, lam_, **thorough)
-            tried.append((float(lam_), float(A_), h.feasible))
-            if h.feasible:
-                hardened = h
-                break
-    elif fail is not None:  # bisection above it, each success hardened at once
-        lo, hi = best.lam, fail
+    def bisect(lo: float, hi: float) -> Design | None:  # geometric, each success hardened at once
+        found = None
         for _ in range(n_bisect):
             mid = np.sqrt(lo * hi)
             d = attempt(mid)
@@ -775,7 +755,23 @@ def largest_design(basis: Basis, f: Function, scales, *, lam_start: float, lam_m
             if h is None:
                 hi = mid
             else:
-                hardened, lo = h, mid
+                found, lo = h, mid
+        return found
+
+    hardened = harden(best)
+    if hardened is None:  # the largest success fails thoroughly
+        successes = sorted({(l_, A_) for l_, A_, ok in tried[:-1] if ok and l_ < best.lam}, reverse=True)
+        if successes and bisect_below:  # between the next largest success and it
+            hardened = bisect(successes[0][0], best.lam)
+        # none of it passes: the next largest successes, largest first
+        for lam_, A_ in (successes[:3] if hardened is None else ()):
+            h = design(basis, f, scales, A_, lam_, **thorough)
+            tried.append((float(lam_), float(A_), h.feasible))
+            if h.feasible:
+                hardened = h
+                break
+    elif fail is not None:  # bisection above it
+        hardened = bisect(best.lam, fail) or hardened
     if hardened is not None:
         return Design(function=hardened.function, lam=hardened.lam, A=hardened.A, margin=hardened.margin,
                       feasible=True, rounds=hardened.rounds, n_constraints=hardened.n_constraints,
