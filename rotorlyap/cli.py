@@ -72,6 +72,7 @@ __all__ = ["build_parser", "main"]
 CG_CHOICES = ("forward", "neutral", "backward")
 CONDITIONS = ("propulsive", "flapping", "none")  # rotorlyap.model.forward_trim.TRIM_TARGETS
 FUNCTION_CHOICES = ("auto", "quadratic", "energy", "polynomial")  # rotorlyap.analysis.certify.FUNCTIONS
+DESIGN_CHOICES = ("default", "thorough")  # rotorlyap.analysis.nonlinear_functions.DESIGN_EFFORTS
 HINGE_SYMBOLS = ("flap", "lag", "pitch")  # rotorlyap.conventions.HINGES: the order of the state
 SIGNIFICANT = 4  # digits of a printed number
 MAX_LIST = 10_000  # values of one grid axis (a start:stop:step typo should not start a week of work)
@@ -350,7 +351,7 @@ def _add_certify(sub) -> None:
     _function_option(c, "auto", "the Liapunov function: auto (default: the quadratic function and the augmented "
                                 "energy, the larger certificate; tens of seconds), quadratic (seconds, the linear "
                                 "range), energy (the augmented energy), polynomial")
-    c.add_argument("--design", choices=("default", "thorough"), default="default",
+    c.add_argument("--design", choices=DESIGN_CHOICES, default="default",
                    help="the design program's effort for a designed function: default (tens of seconds in "
                         "forward flight), thorough (more counterexample rounds and bisection steps: larger "
                         "start regions, minutes; how the book's certificate files are made)")

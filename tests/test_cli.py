@@ -247,6 +247,14 @@ def test_the_command_line_knows_the_trims_conditions():
     assert CONDITIONS == TRIM_TARGETS
 
 
+def test_the_command_line_knows_the_design_efforts():
+    """The --design choices (kept in the CLI so that --help loads no model) are the design program's."""
+    from rotorlyap.analysis.nonlinear_functions import DESIGN_EFFORTS
+    from rotorlyap.cli import DESIGN_CHOICES
+
+    assert DESIGN_CHOICES == tuple(DESIGN_EFFORTS)
+
+
 def test_sweep_lists_and_ranges():
     """A list is 'a,b,c' or 'start:stop:step' with the stop included and decimal steps exact."""
     assert _number_list("--mu", "0:0.3:0.1") == [0.0, 0.1, 0.2, 0.3]

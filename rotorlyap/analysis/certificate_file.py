@@ -86,8 +86,8 @@ from ..model.parameters import BladeParameters
 from ..model.steady import SteadyMotion, TabulatedMotion, disturbed_rhs
 from ..reporting import format_small
 from .functions import QuadraticFunction
-from .nonlinear_functions import (DESIGN_EFFORTS, FAMILIES, DesignedFunction, energy_basis, energy_reference, is_autonomous,
-                                  polynomial_basis)
+from .nonlinear_functions import (DESIGN_EFFORTS, FAMILIES, DesignedFunction, energy_basis, energy_reference,
+                                  is_autonomous, polynomial_basis)
 from .stability import psi_free_system
 
 __all__ = ["FAMILY_WORDS", "FORMAT", "STEADY_RESIDUAL_TOL", "VERSION", "StoredCertificate", "Verification", "read_certificate",

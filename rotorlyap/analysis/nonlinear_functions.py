@@ -54,8 +54,8 @@ from ..model.blade import Blade
 from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
 from .functions import EnergyFunction, energy_function
 
-__all__ = ["DESIGN_EFFORTS", "FAMILIES", "LAM_MAX", "LAM_START", "N_BISECT", "RATIOS", "DesignedFunction", "designed_function",
-           "energy_basis", "energy_reference", "is_autonomous",
+__all__ = ["DESIGN_EFFORTS", "FAMILIES", "LAM_MAX", "LAM_START", "N_BISECT", "RATIOS", "DesignedFunction",
+           "designed_function", "energy_basis", "energy_reference", "is_autonomous",
            "mode_directions", "polynomial_basis"]
 
 FAMILIES = ("energy", "polynomial")
@@ -74,8 +74,8 @@ N_BISECT = 2
 #: The design program's efforts, by name: the options :func:`designed_function` passes on to
 #: :func:`rotorlyap.methods.scenario.largest_design` and :func:`~rotorlyap.methods.scenario.design`.
 #: ``"default"`` is the package's own (the default :func:`rotorlyap.certify`: tens of seconds in
-#: forward flight). ``"thorough"`` runs twice the counterexample rounds of each design (16) and of
-#: each thorough design (40 instead of 12), a bisection step more (3), and a bisection below a start
+#: forward flight). ``"thorough"`` runs 16 counterexample rounds per design instead of 8 and 40 per
+#: thorough design instead of 12, a bisection step more (3), and a bisection below a start
 #: radius whose thorough design failed (``bisect_below``): minutes in forward flight, for the
 #: certificate files the book ships (``tools/make_certificates.py``). The rounds are what the larger
 #: start radii need: the program stops a design whose rounds have squeezed its margin, and with few
