@@ -154,8 +154,8 @@ class Case:
 #:   yardstick is a lower bound), the pitch angle's x1.4 with the rates' x1.3 14.3 %; but the file
 #:   made in the x1.3 norm about the refined motion met the start radius 2.2 and 12 %, and about the
 #:   refined motion the x1.25 norm met 13.7 % and the flap rate's x1.15 14.1 % (along the pitch angle
-#:   both, a lower bound's share), so the norm here was kept. More rounds (80 thorough, 24 per design) met the same start radius at mu = 0.2
-#:   as the thorough effort's 40 and 16.
+#:   both, a lower bound's share), so the norm here was kept. More rounds (80 thorough, 24 per
+#:   design) met the same start radius at mu = 0.2 as the thorough effort's 40 and 16.
 SCALE_FACTORS: dict[str, tuple[float, ...]] = {
     "forward": (1.0, 1.0, 1.3, 1.0, 1.0, 1.3),
     "neutral": (1.0, 1.0, 2.5, 1.0, 1.0, 1.2),
@@ -194,7 +194,8 @@ MU025_SCALES: tuple[float, ...] = _scaled("mu025")
 
 CASES: tuple[Case, ...] = (
     # every designed certificate of the chapter is a file (book/certificates/, made once by
-    # tools/make_certificates.py with certify, in forward flight its thorough design) and verified here from nothing
+    # tools/make_certificates.py with certify, in forward flight its thorough design) and verified
+    # here from nothing
     # (rotorlyap.verify); the quadratic function beside it is computed. In hover the design takes
     # half a minute to a minute and the falsifier attacks the same certificate in the test run
     # (tests/test_falsifier_designed_*.py): designed once, not by both. The backward C.G.'s design
