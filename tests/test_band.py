@@ -232,3 +232,44 @@ def test_the_split_by_share_never_proves_beyond_the_closed_form(monkeypatch):
     proof = _prove(system, 2.0 * exact)
     assert proof.proved
     assert 0.85 * exact <= proof.A < exact
+
+
+def test_proofs_over_shells_of_cubes_stay_within_the_closed_form_bounds():
+    """The proof over shells of cubes (``prove_quadratic_models(..., shells=)``): each shell's search
+    covers only its part of the band, so a gap between shells would let it prove too much. On the
+    one-dimensional cubic and the rotated system with its cubic term (also scaled up a hundredfold)
+    it proves within, never beyond, the closed-form bound, and above 0.85 of it."""
+    cubic = PolynomialSystem(1, lambda x: [[x[0] * x[0] - 1.0]], [[-1.0]], [[0.5]])
+    proof = _prove(cubic, 1.0, shells=0.8)
+    assert proof.proved and 0.95 <= proof.A < 1.0
+    assert "shells of cubes" in proof.message
+    for scale in (1.0, 100.0):
+        system, exact = _rotated_cubic(scale)
+        proof = _prove(system, exact, shells=0.8)
+        assert proof.proved
+        assert 0.85 * exact <= proof.A < exact
+    with pytest.raises(ValueError, match="shells must lie in"):
+        _prove(cubic, 1.0, shells=1.0)
+
+
+def test_a_shell_search_covers_its_shell_only_and_a_complete_search_proves_all_or_nothing():
+    """``largest_bound``'s ``sigma_floor`` and ``complete``. ``x' = x - 2 x^3`` with ``W = x^2 / 2``:
+    ``W' = x^2 (1 - 2 x^2)``, positive for ``|x| < 1 / sqrt(2)``, negative beyond. Over the cube of 1
+    the shell ``0.75 <= |x| <= 1`` is shown (complete); the whole band is not (the complete search
+    returns 0, not a smaller bound), nor the shell from 0.6, which reaches into ``W' > 0``."""
+    from rotorlyap.methods.band import largest_bound
+
+    system = PolynomialSystem(1, lambda x: [[1.0 - 2.0 * x[0] * x[0]]], [[1.0]], [[0.5]])
+    cube = 1.0
+    coef, rem, exps, _ = system.jacobian_models(1, cube * np.ones(1), 3)
+    S, dS = system.quadratic(1)
+    bp = band_polynomial(S, dS, coef, exps, rem, np.zeros(1), cube)
+    level = 0.5 * 0.01 ** 2
+    with iv.arithmetic("balls"):
+        shell = largest_bound(bp, 1.0, level, sigma_floor=0.75, complete=True)
+        inner = largest_bound(bp, 1.0, level, sigma_floor=0.6, complete=True)
+        whole = largest_bound(bp, 1.0, level, complete=True)
+    assert 0.999 < shell.A <= 1.0
+    assert inner.A == 0.0 and whole.A == 0.0
+    with pytest.raises(ValueError, match="sigma_floor"):
+        largest_bound(bp, 1.0, level, sigma_floor=1.0)

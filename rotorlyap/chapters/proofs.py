@@ -20,9 +20,9 @@ import numpy as np
 
 from ..analysis.certify import Certificate, certify
 from ..analysis.functions import quadratic_function
-from ..analysis.proof import proof_problem, prove_blade
+from ..analysis.proof import FLIGHT_FIRST_CUBE, FLIGHT_SHELLS, proof_problem, prove_blade
 from ..conventions import DEFAULT_SCALES
-from ..methods.proof import Proof, nonlinear_bounds
+from ..methods.proof import SHELL_CORE, Proof, nonlinear_bounds
 from ..model.blade import Blade
 from ..model.forward_trim import forward_flight_trim
 from ..model.parameters import BladeParameters
@@ -166,7 +166,10 @@ class ProofTable:
         flight case's ``ch10_flight_mu`` and ``ch10_flight_n``; the settings the text quotes: the
         numerical certificates' azimuths ``ch10_n_psi``, the Taylor models' order
         ``ch10_taylor_order`` (:func:`rotorlyap.analysis.proof.prove_blade`'s default) and the
-        step of chapter 8's advance-ratio grid ``ch10_mu_step``."""
+        step of chapter 8's advance-ratio grid ``ch10_mu_step``; the forward-flight proof's shells
+        (``ch10_shell_ratio``, ``ch10_shell_core``, ``ch10_first_target``: the settings of
+        :func:`rotorlyap.analysis.proof.prove_blade` in forward flight) and its proved bound as a
+        fraction of the numerical one, ``ch10_flight_Afrac`` (2 decimals)."""
         import inspect
 
         from .scans import MU_FORENSIC
@@ -203,6 +206,11 @@ class ProofTable:
             k = int(np.argmax(proof.terms["nonlinear"]))
             f["ch10_flight_tight"] = round(float(np.degrees(proof.psi[k] + np.pi / proof.n_intervals)))
             f["ch10_colloc_res"] = float(f"{self.collocation_residual:.1g}")
+            # the proof over shells of cubes (prove_blade's forward-flight defaults)
+            f["ch10_shell_ratio"] = FLIGHT_SHELLS
+            f["ch10_shell_core"] = SHELL_CORE
+            f["ch10_first_target"] = FLIGHT_FIRST_CUBE
+            f["ch10_flight_Afrac"] = float(f"{proof.A / flight[0].numerical[0]:.2f}")
         return f
 
     def export(self) -> dict:

@@ -500,7 +500,7 @@ def _sigma_range(bp: BandPolynomial, k: np.ndarray, vc: np.ndarray, vw: np.ndarr
 
 def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: int = 200_000,
                   patience: int = 50_000, steps=STEPS, batch: int = 8192, initial_split: int = 1,
-                  reserve: float = 0.25) -> BandResult:
+                  reserve: float = 0.25, sigma_floor: float = 0.0, complete: bool = False) -> BandResult:
     """The largest bound ``A <= A_max`` for which ``W' < 0`` is shown on ``|y| <= A, W(y) >= level``.
 
     Branch and bound (module docstring), breadth first, ``batch`` boxes at a time: a box whose
@@ -517,7 +517,9 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
     bp : BandPolynomial
         ``W'`` from the models over the cube ``|y_i| <= bp.cube``.
     A_max : float
-        The largest bound tried, ``0 < A_max <= bp.cube``.
+        The largest bound tried (> 0). Above ``bp.cube`` only the cube's part of the band is
+        searched, its points with ``|y| <= A_max`` (the whole cube from ``sqrt(n) bp.cube`` on): for a
+        search over shells of cubes (``sigma_floor``, ``complete``).
     level : float
         ``c > 0``, the band's level: the result holds for every bound ``A`` with
         ``A^2 min l >= level`` (the certificate's level at ``A`` is at least this one).
@@ -534,6 +536,14 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
     reserve : float
         The last fraction of ``max_boxes`` goes to the open boxes nearest the origin (best first,
         no more steps down), so that a search cut short ends with its bound as far out as it can.
+    sigma_floor : float
+        The search covers only the band's points with ``max_i |y_i| >= sigma_floor bp.cube``, in
+        ``[0, 1)`` (default 0, all of it): the shell of the cube outside a smaller cube, which
+        another search covers.
+    complete : bool
+        True: show ``W' < 0`` on all of ``|y| <= A_max`` (within the cube and above the floor) or
+        nothing: the search stops with ``A = 0`` where the bound would step down (a box centre
+        where the polynomial part is not negative, ``patience``, ``max_boxes``).
 
     Returns
     -------
@@ -541,8 +551,11 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         ``A`` (0 if nothing is shown).
     """
     n, N = bp.n, bp.S.shape[0]
-    if not (0 < A_max <= bp.cube):
-        raise ValueError(f"A_max must lie in (0, cube = {bp.cube}], got {A_max!r}")
+    if not (0 < A_max <= bp.cube or (sigma_floor > 0 or complete) and 0 < A_max < np.inf):
+        raise ValueError(f"A_max must lie in (0, cube = {bp.cube}] (any bound > 0 with sigma_floor or complete), "
+                         f"got {A_max!r}")
+    if not (0 <= sigma_floor < 1):
+        raise ValueError(f"sigma_floor must lie in [0, 1), got {sigma_floor!r}")
     if not (level > 0):
         raise ValueError(f"level must be > 0, got {level!r}")
     ev = _Evaluator(bp)
@@ -560,13 +573,15 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
     k = np.repeat(np.arange(N), 2 * n * G)
     face = np.tile(np.repeat(np.arange(2 * n), G), N)
     lo = np.zeros((k.size, m))
+    lo[:, -1] = sigma_floor
     hi = np.ones((k.size, m))
     if n > 1:
         lo[:, :n - 1] = np.tile(edges[cells], (N * 2 * n, 1))
         hi[:, :n - 1] = np.tile(edges[cells + 1], (N * 2 * n, 1))
     # rho: the bound in units of the cube, a float whose band |t| <= rho the search covers
     rho = float(np.nextafter(float((Balls(float(A_max)) / Balls(bp.cube)).lower()), -np.inf))
-    rho = min(rho, 1.0)
+    if not (sigma_floor > 0 or complete):
+        rho = min(rho, 1.0)
     estimate = np.full(N, -np.inf)
     count = 0
     R = bp.R
@@ -602,7 +617,7 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
             if not k.size:
                 break
         if count >= max_boxes:
-            rho = min(rho, float(np.nextafter(np.min(rmin), -np.inf)))
+            rho = 0.0 if complete else min(rho, float(np.nextafter(np.min(rmin), -np.inf)))
             where = np.bincount(k, minlength=N)
             top = np.argsort(where)[::-1][:3]
             stop = (f"stopped after {count} boxes ({k.size} open, most in intervals "
@@ -628,35 +643,50 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         for i in range(m):
             spread = spread + Balls(np.zeros(k.size), grad[:, i]) * xw[:, i]
         h_up = (centre + spread).upper()                             # H <= h_up on the box
-        second = ev.second_order(coef, xc, xw)
-        if second is not None:
-            # the second-order form: H(c) + grad H(c) h + h^T Hess(box) h / 2, each term bounded
-            g_c, hess = second
-            lin = Balls(np.zeros(k.size), np.zeros(k.size))
-            for i in range(m):
-                lin = lin + Balls(np.zeros(k.size), g_c[:, i]) * xw[:, i]
-            for p, (i, j) in enumerate(ev.pairs):
-                if i == j:
-                    top = np.maximum(hess[:, p].upper(), 0.0)
-                    lin = lin + Balls(np.zeros(k.size), top) * xw[:, i] * (xw[:, i] * 0.5)
-                else:
-                    lin = lin + Balls(np.zeros(k.size), hess[:, p].magnitude()) * xw[:, i] * xw[:, j]
-            h_up = np.minimum(h_up, (centre + lin).upper())
-        # G = sigma H <= sigma_hi h_up (h_up >= 0) or sigma_lo h_up (h_up < 0)
-        g_up = (Balls(np.where(h_up >= 0, hi[:, -1], lo[:, -1])) * Balls(h_up)).upper()
         # the quadratic part n0 |v|^2 <= n0 min |v|^2 (n0 < 0), else n0 max |v|^2
         n0 = bp.n0[k]
         mig = np.maximum(np.nextafter(np.abs(vc) - vw, -np.inf), 0.0)
         v2 = np.where(n0 < 0, Balls(mig * mig).sum(axis=-1).lower(), Balls(v_mag * v_mag).sum(axis=-1).upper())
         # the remainder's term 2 sum_jk |S v|_j R_jk |v_k| and the residual's 2 e |v| / (A_c sigma_lo)
+        quad = Balls(n0) * Balls(v2)
         rterm = (Balls(Sv_mag[:, :, None]) * Balls(R[k]) * Balls(v_mag[:, None, :])).sum(axis=(1, 2)) * 2.0
-        bound = Balls(g_up) + Balls(n0) * Balls(v2) + rterm
+        eterm = None
         if np.any(res[k] > 0):
             vnorm = Balls(v_mag * v_mag).sum(axis=-1).sqrt()
             with np.errstate(divide="ignore", invalid="ignore"):
                 eterm = Balls(res[k]) * vnorm * 2.0 / (Balls(bp.cube) * Balls(lo[:, -1]))
-            bound = bound + Balls(np.where(res[k] > 0, eterm.upper(), 0.0))
-        bound = bound.upper()
+            eterm = np.where(res[k] > 0, eterm.upper(), 0.0)
+
+        def upper_bound(h, rows):
+            """The box bound from ``H <= h`` on the boxes ``rows``: G = sigma H <= sigma_hi h
+            (h >= 0) or sigma_lo h (h < 0), plus the other terms."""
+            g_up = (Balls(np.where(h >= 0, hi[rows, -1], lo[rows, -1])) * Balls(h)).upper()
+            b = (Balls(g_up) + Balls._new(quad.mid[rows], quad.rad[rows])
+                 + Balls._new(rterm.mid[rows], rterm.rad[rows]))
+            if eterm is not None:
+                b = b + Balls(eterm[rows])
+            return b.upper()
+
+        every = np.arange(k.size)
+        bound = upper_bound(h_up, every)
+        # the second-order form where the mean-value form leaves the box open (a closed box stays
+        # closed: the bound grows with h): H(c) + grad H(c) h + h^T Hess(box) h / 2, each term bounded
+        rows = every[~(bound < 0)]
+        second = ev.second_order(Balls._new(coef.mid[rows], coef.rad[rows]), xc[rows], xw[rows]) if rows.size else None
+        if second is not None:
+            g_c, hess = second
+            wr = xw[rows]
+            lin = Balls(np.zeros(rows.size), np.zeros(rows.size))
+            for i in range(m):
+                lin = lin + Balls(np.zeros(rows.size), g_c[:, i]) * wr[:, i]
+            for p, (i, j) in enumerate(ev.pairs):
+                if i == j:
+                    top = np.maximum(hess[:, p].upper(), 0.0)
+                    lin = lin + Balls(np.zeros(rows.size), top) * wr[:, i] * (wr[:, i] * 0.5)
+                else:
+                    lin = lin + Balls(np.zeros(rows.size), hess[:, p].magnitude()) * wr[:, i] * wr[:, j]
+            h_rows = np.minimum(h_up[rows], (Balls._new(centre.mid[rows], centre.rad[rows]) + lin).upper())
+            bound[rows] = upper_bound(h_rows, rows)
         # the polynomial part at the centres, W' / |y|^2 (an estimate, not a bound)
         vc2 = np.sum(vc ** 2, axis=1)
         point = (xc[:, -1] * centre.mid + n0 * vc2) / vc2
@@ -665,6 +695,10 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         if np.any(in_band):
             np.maximum.at(estimate, k[in_band], point[in_band])
         bad = in_band & (point >= 0)
+        if complete and (np.any(bad) or count - since > patience):
+            rho, stop = 0.0, ("the polynomial part is not negative at a box centre in the band" if np.any(bad)
+                              else f"not closed after {count} boxes")
+            break
         if np.any(bad) or (count - since > patience and not final):
             # the models cannot show W' < 0 at a centre in the band (the cap drops to it), or the
             # step ran out of patience (the next step): every closed box stays closed
@@ -692,6 +726,9 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
             share[:, -1] += np.abs(centre.mid) * xw[:, -1]
         open_ = ~(bound < 0)
         tiny = open_ & (np.max(xw, axis=1) < 1e-9)
+        if np.any(tiny) and complete:
+            rho, stop = 0.0, "boxes too small to split"
+            break
         if np.any(tiny):  # boxes too small to split: the bound stays below them
             rmin_b = (Balls(lo[tiny, -1]) * Balls(np.sum(mig[tiny] ** 2, axis=1)).sqrt()).lower()
             rho = min(rho, float(np.nextafter(np.min(rmin_b), -np.inf)))
