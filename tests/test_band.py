@@ -273,3 +273,15 @@ def test_a_shell_search_covers_its_shell_only_and_a_complete_search_proves_all_o
     assert inner.A == 0.0 and whole.A == 0.0
     with pytest.raises(ValueError, match="sigma_floor"):
         largest_bound(bp, 1.0, level, sigma_floor=1.0)
+
+
+def test_where_no_bound_closes_every_shell_the_search_over_one_cube_follows():
+    """A bound asked far beyond the region (``x' = -x + x^3``, region ``|x| < 1``, asked 10): none of
+    the shells' first bounds (10 down to 8) closes, and the proof falls back to the search over one
+    cube, which still ends inside the closed form; ``tried`` lists the shells' bounds first."""
+    cubic = PolynomialSystem(1, lambda x: [[x[0] * x[0] - 1.0]], [[-1.0]], [[0.5]])
+    proof = _prove(cubic, 10.0, shells=0.8)
+    assert proof.proved and 0.5 <= proof.A < 1.0
+    assert [ok for _, ok in proof.tried[:5]] == [False] * 5
+    assert [round(T, 6) for T, _ in proof.tried[:2]] == [10.0, 9.5]
+    assert "shells" not in proof.message

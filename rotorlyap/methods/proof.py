@@ -216,9 +216,10 @@ proved in 34 s; 0.35 seven cubes, 38 s; down to the band's inner edge nineteen c
 
 
 def _prove_by_shells(models, base_ok: bool, first: float, ratio: float, A: float, s_lo, s_hi, m_hi, e,
-                     psi, blocked0: dict, N: int, group: int, order: int, max_boxes: int) -> Proof:
-    """:func:`prove_quadratic_models` over shells of cubes (its ``shells``): the largest bound of
-    ``first`` times :data:`rotorlyap.methods.band.STEPS` whose every cube's search closes."""
+                     psi, blocked0: dict, N: int, group: int, order: int, max_boxes: int, tries: int) -> Proof:
+    """:func:`prove_quadratic_models` over shells of cubes (its ``shells``): the largest of the first
+    ``tries`` bounds ``first`` times :data:`rotorlyap.methods.band.STEPS` whose every cube's search
+    closes."""
     from .band import STEPS, hopeless, largest_bound
 
     s_min = float(np.min(s_lo))
@@ -226,7 +227,7 @@ def _prove_by_shells(models, base_ok: bool, first: float, ratio: float, A: float
     terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
              "nonlinear": np.full(N, np.nan)}
     why = "nothing was tried"
-    for step in (STEPS if base_ok else ()):
+    for step in (STEPS[:tries] if base_ok else ()):
         T = first * step
         level = float(np.nextafter(T * T * s_min * (1 - 1e-15), -np.inf))
         cubes = [T]
@@ -496,7 +497,9 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         kinks on the retreating side, first order in the box), so that the points near the
         origin, which one cube of ``T`` leaves to its largest remainder, are shown with small
         ones. Each cube's search must close (``max_boxes`` boxes at most); where one does not, the
-        next bound of :data:`rotorlyap.methods.band.STEPS` times ``first_cube A`` is tried.
+        next bound of :data:`rotorlyap.methods.band.STEPS` times ``first_cube A`` is tried, up to
+        ``refits + 1`` bounds; where none is proved, the search over one cube follows, from the
+        cube of ``first_cube A`` (``Proof.tried`` lists both).
 
     Returns
     -------
@@ -551,12 +554,17 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         if not 0 < shells < 1:
             raise ValueError(f"shells must lie in (0, 1), got {shells!r}")
         base_ok = bool(s_min > 0 and np.all(m_hi < 0) and not _reasons(blocked0, psi))
-        return _prove_by_shells(models, base_ok, A * first_cube, float(shells), A, s_lo, s_hi, m_hi, e, psi,
-                                blocked0, N, group, order, max_boxes)
-    tried = []
+        by_shells = _prove_by_shells(models, base_ok, A * first_cube, float(shells), A, s_lo, s_hi, m_hi, e, psi,
+                                     blocked0, N, group, order, max_boxes, refits + 1)
+        if by_shells.proved or not base_ok:
+            return by_shells
+        # none of the bounds tried closed every shell: the search over one cube
+        tried, cube_first = list(by_shells.tried), first_cube
+    else:
+        tried, cube_first = [], first_cube
     res = None
     best = None
-    cube = A * first_cube
+    cube = A * cube_first
     finite = np.ones(N, dtype=bool)
     all_blocked = dict(blocked0)
     terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
