@@ -215,32 +215,32 @@ fraction of the bound: its search covers all of it. Measured on the trimmed heli
 proved in 34 s; 0.35 seven cubes, 38 s; down to the band's inner edge nineteen cubes, 54 s."""
 
 
-def _prove_by_shells(models, base_ok: bool, first: float, ratio: float, A: float, s_lo, s_hi, m_hi, e,
-                     psi, blocked0: dict, N: int, group: int, order: int, max_boxes: int, tries: int) -> Proof:
+def _level_and_radii(bound: float, s_min: float, s_hi: np.ndarray) -> tuple[float, np.ndarray]:
+    """The level ``c = A^2 min l`` (rounded down) and the start radii ``sqrt(c / s_k)`` (rounded down)."""
+    c = float(np.nextafter(bound * bound * s_min * (1 - 1e-15), -np.inf))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = np.nextafter(np.sqrt(np.nextafter(c / s_hi, -np.inf)) * (1 - 1e-15), -np.inf)
+    return c, np.asarray(r, dtype=float)
+
+
+def _prove_by_shells(models, first: float, ratio: float, A: float, s_min: float, s_hi, terms: dict, psi,
+                     blocked0: dict, N: int, group: int, order: int, max_boxes: int, tries: int):
     """:func:`prove_quadratic_models` over shells of cubes (its ``shells``): the largest of the first
     ``tries`` bounds ``first`` times :data:`rotorlyap.methods.band.STEPS` whose every cube's search
-    closes."""
+    closes. Returns ``(proof or None, the bounds tried)``."""
     from .band import STEPS, hopeless, largest_bound
 
-    s_min = float(np.min(s_lo))
     tried = []
-    terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
-             "nonlinear": np.full(N, np.nan)}
-    why = "nothing was tried"
-    for step in (STEPS[:tries] if base_ok else ()):
+    for step in STEPS[:tries]:
         T = first * step
-        level = float(np.nextafter(T * T * s_min * (1 - 1e-15), -np.inf))
+        level, radii = _level_and_radii(T, s_min, s_hi)
         cubes = [T]
         while cubes[-1] * ratio > SHELL_CORE * T:
             cubes.append(cubes[-1] * ratio)
         boxes, deviation, estimate, ok = 0, np.zeros(N), np.full(N, -np.inf), True
         for j, cube in enumerate(cubes):
-            bp, blocked, finite, dev = models(cube)
-            reasons = _reasons({**blocked0, **blocked}, psi)
-            if bp is None or reasons or hopeless(bp):
-                why = (f"no enclosure: {reasons}" if reasons else
-                       "the Taylor models are not finite" if bp is None else
-                       f"the models' remainder alone defeats the quadratic part over the cube {cube:.3g}")
+            bp, blocked, _, dev = models(cube)
+            if bp is None or _reasons({**blocked0, **blocked}, psi) or hopeless(bp):
                 ok = False
                 break
             # the cube's shell: max |y_i| from the next cube's (a little below it) up to this cube
@@ -249,33 +249,20 @@ def _prove_by_shells(models, base_ok: bool, first: float, ratio: float, A: float
                                 complete=True)
             boxes += res.boxes
             if not res.A > 0:
-                why = f"the branch and bound over the cube {cube:.3g} (bound {T:.3g}): {res.message}"
                 ok = False
                 break
             deviation = np.maximum(deviation, dev)
             estimate = np.maximum(estimate, np.repeat(res.estimate, group))
         tried.append((T, ok))
         if ok:
-            terms["deviation"] = deviation
-            terms["nonlinear"] = estimate
-            c = float(np.nextafter(T * T * s_min * (1 - 1e-15), -np.inf))
-            with np.errstate(divide="ignore", invalid="ignore"):
-                r = np.nextafter(np.sqrt(np.nextafter(c / s_hi, -np.inf)) * (1 - 1e-15), -np.inf)
-            return Proof(proved=True, A=float(T), A_requested=A, level=c, psi=psi,
-                         lambda0=np.asarray(r, dtype=float), n_intervals=N, terms=terms, tried=tuple(tried),
-                         message=(f"proved: W' < 0 on the band |y| <= A = {T:.4g}, W >= c over the whole period "
-                                  f"({N} azimuth intervals; Taylor models of order {order} over {len(cubes)} "
-                                  f"shells of cubes, branch and bound over directions and radii: {boxes} boxes)"))
-    if s_min <= 0:
-        why = f"S is not proved positive definite (smallest eigenvalue bound {s_min:.3g})"
-    elif _reasons(blocked0, psi):
-        why = "no enclosure: " + _reasons(blocked0, psi)
-    elif not np.all(m_hi < 0):
-        k = int(np.flatnonzero(~(m_hi < 0))[0])
-        why = (f"the linear part at psi = {np.degrees(psi[k]):.1f} deg: lambda_max(S' + J0^T S + S J0) <= "
-               f"{m_hi[k]:.3g} is not proved negative")
-    return Proof(proved=False, A=0.0, A_requested=A, level=0.0, psi=psi, lambda0=np.zeros(N), n_intervals=N,
-                 terms=terms, tried=tuple(tried), message=f"not proved: {why}")
+            message = (f"proved: W' < 0 on the band |y| <= A = {T:.4g}, W >= c over the whole period ({N} azimuth "
+                       f"intervals; Taylor models of order {order} over {len(cubes)} shells of cubes, branch and "
+                       f"bound over directions and radii: {boxes} boxes)")
+            proof = Proof(proved=True, A=float(T), A_requested=A, level=level, psi=psi, lambda0=radii, n_intervals=N,
+                          terms={**terms, "deviation": deviation, "nonlinear": estimate}, tried=tuple(tried),
+                          message=message)
+            return proof, tried
+    return None, tried
 
 
 def nonlinear_bounds(system: ProofSystem, quadratic: Callable[[int], tuple], bounds, *, scales,
@@ -550,26 +537,23 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
 
     if not 0 < first_cube <= 1:
         raise ValueError(f"first_cube must lie in (0, 1], got {first_cube!r}")
-    if shells is not None:
-        if not 0 < shells < 1:
-            raise ValueError(f"shells must lie in (0, 1), got {shells!r}")
-        base_ok = bool(s_min > 0 and np.all(m_hi < 0) and not _reasons(blocked0, psi))
-        by_shells = _prove_by_shells(models, base_ok, A * first_cube, float(shells), A, s_lo, s_hi, m_hi, e, psi,
-                                     blocked0, N, group, order, max_boxes, refits + 1)
-        if by_shells.proved or not base_ok:
-            return by_shells
-        # none of the bounds tried closed every shell: the search over one cube
-        tried, cube_first = list(by_shells.tried), first_cube
-    else:
-        tried, cube_first = [], first_cube
-    res = None
-    best = None
-    cube = A * cube_first
-    finite = np.ones(N, dtype=bool)
-    all_blocked = dict(blocked0)
+    if shells is not None and not 0 < shells < 1:
+        raise ValueError(f"shells must lie in (0, 1), got {shells!r}")
     terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
              "nonlinear": np.full(N, np.nan)}
     base_ok = bool(s_min > 0 and np.all(m_hi < 0) and not _reasons(blocked0, psi))
+    tried = []
+    if shells is not None and base_ok:
+        proof, tried = _prove_by_shells(models, A * first_cube, float(shells), A, s_min, s_hi, terms, psi, blocked0,
+                                        N, group, order, max_boxes, refits + 1)
+        if proof is not None:
+            return proof
+        # none of the bounds tried closed every shell: the search over one cube
+    res = None
+    best = None
+    cube = A * first_cube
+    finite = np.ones(N, dtype=bool)
+    all_blocked = dict(blocked0)
     too_big = None            # the smallest cube whose models could not reach half of it
     for _ in range(refits + 1 if base_ok else 0):
         bp, blocked, finite, deviation = models(cube)
@@ -611,10 +595,8 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         terms["nonlinear"] = np.repeat(res.estimate, group)
     if best is not None:
         bound = res.A
-        c = float(np.nextafter(bound * bound * s_min * (1 - 1e-15), -np.inf))
-        with np.errstate(divide="ignore", invalid="ignore"):
-            r = np.nextafter(np.sqrt(np.nextafter(c / s_hi, -np.inf)) * (1 - 1e-15), -np.inf)
-        return Proof(proved=True, A=float(bound), A_requested=A, level=c, psi=psi, lambda0=np.asarray(r, dtype=float),
+        c, r = _level_and_radii(bound, s_min, s_hi)
+        return Proof(proved=True, A=float(bound), A_requested=A, level=c, psi=psi, lambda0=r,
                      n_intervals=N, terms=terms, tried=tuple(tried),
                      message=(f"proved: W' < 0 on the band |y| <= A = {bound:.4g}, W >= c over the whole period "
                               f"({N} azimuth intervals; Taylor models of order {order}, branch and bound over "
