@@ -355,6 +355,9 @@ def _add_certify(sub) -> None:
                    help="the design program's effort for a designed function: default (tens of seconds in "
                         "forward flight), thorough (more counterexample rounds and bisection steps: larger "
                         "start regions, minutes; how the book's certificate files are made)")
+    c.add_argument("--harmonics", type=_int_at_least("--harmonics", 0), default=None, metavar="K",
+                   help="in forward flight, the harmonics of the azimuth in a designed function's quadratic "
+                        "coefficients (default 1; hover: 0 only)")
     c.add_argument("--verify", action="store_true",
                    help="also prove the certificate's own function by ball arithmetic (rotorlyap.certify("
                         "verify=True)): seconds in hover, minutes in forward flight; adds 'proof' and "
@@ -752,7 +755,8 @@ def _certify(args) -> int:
           file=sys.stderr, flush=True)
     with listening(_progress_listener()):
         cert = certify(params, args.mu, condition=args.condition, function=function, A=args.A, scales=scales,
-                       n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify, design=args.design)
+                       n_psi=args.n_psi, n_sphere=args.n_sphere, verify=args.verify, design=args.design,
+                       harmonics=args.harmonics)
     data = certificate_json(cert, case, n_psi=args.n_psi, n_sphere=args.n_sphere)
     if args.plot is not None:
         from .chapters.blade_commands import plot_certificate

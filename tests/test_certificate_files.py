@@ -245,12 +245,13 @@ def test_a_c81_airfoil_is_embedded_and_a_table_a_file_would_round_is_refused(qua
         unsaveable.save(tmp_path / "rounded.json")
 
 
-def test_a_polynomial_function_with_harmonics_is_rebuilt_from_its_description_and_coefficients(quadratic, tmp_path):
-    """The polynomial family (degrees 2 to 4, one harmonic of the azimuth on the quadratic terms):
-    its basis rebuilt from family, harmonics and degrees has the stored names, and with the stored
+def test_a_polynomial_function_is_rebuilt_from_its_description_and_coefficients(quadratic, tmp_path):
+    """The polynomial family (degrees 2 to 4; in hover its coefficients are constant): its basis
+    rebuilt from family, harmonics and degrees has the stored names, and with the stored
     coefficients it is the same W and W' to the bit (the file's claims are the quadratic
     certificate's, so only the reading is checked here); a description that does not match the
-    names is a CertificateFileError."""
+    names is a CertificateFileError. (Harmonics of the azimuth are read back by chapter 11's
+    forward-flight files, which hold two.)"""
     import dataclasses
 
     from rotorlyap.analysis.nonlinear_functions import DesignedFunction, polynomial_basis
@@ -258,20 +259,20 @@ def test_a_polynomial_function_with_harmonics_is_rebuilt_from_its_description_an
 
     cert = quadratic[0]
     fun = cert.lyapunov
-    basis = polynomial_basis(fun.blade, fun.steady, scales=cert.scales, harmonics=1)
+    basis = polynomial_basis(fun.blade, fun.steady, scales=cert.scales)
     c = np.random.default_rng(2).normal(size=basis.size)
     bf = BasisFunction(basis, c, fun.f, "polynomial")
     designed = DesignedFunction(fun.blade, fun.steady, "polynomial", Design(bf, 0.1, 0.3, 0.01, True, 1, 10),
                                 cert.scales, True, "polynomial")
     path = dataclasses.replace(cert, lyapunov=designed, function="polynomial").save(tmp_path / "poly.json")
     data = json.loads(path.read_text())["function"]
-    assert (data["harmonics"], data["degrees"], len(data["names"])) == (1, [2, 3, 4], basis.size)
+    assert (data["harmonics"], data["degrees"], len(data["names"])) == (0, [2, 3, 4], basis.size) == (0, [2, 3, 4], 203)
     back = read_certificate(path).function
     x = np.random.default_rng(3).normal(size=(32, 6)) * cert.scales * 0.5
     psi = np.linspace(0.0, 6.0, 32)
     assert np.array_equal(back.W(psi, x), bf.W(psi, x)) and np.array_equal(back.dW(psi, x), bf.dW(psi, x))
     with pytest.raises(CertificateFileError, match="function.names"):
-        read_certificate(_edited(path, tmp_path, lambda d: d["function"].__setitem__("harmonics", 0)))
+        read_certificate(_edited(path, tmp_path, lambda d: d["function"].__setitem__("degrees", [2, 3])))
 
 
 def test_prove_adds_the_ball_arithmetic_proof_of_a_quadratic_function(quadratic):
@@ -336,6 +337,20 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
 
     with pytest.raises(CertificateFileError, match="function.design.effort.*'default', 'thorough'"):
         read_certificate(_edited(path, tmp_path, unknown_effort))
+
+    # a hover function said to depend on the azimuth (names and coefficients of one harmonic, which
+    # would keep every claim at psi = 0): refused, since the search of an autonomous blade is at one
+    # azimuth only
+    from rotorlyap.analysis.nonlinear_functions import energy_basis
+
+    def with_harmonic(d):
+        d["function"]["harmonics"] = 1
+        d["function"]["names"] = ["energy"] + [n for n in energy_basis(stored.function.blade, stored.function.steady,
+                                                                        scales=cert.scales).names[1:]] * 3
+        d["function"]["coefficients"] = d["function"]["coefficients"] + [0.0] * 42
+
+    with pytest.raises(CertificateFileError, match=r"function.harmonics: must be 0 where the disturbed blade"):
+        read_certificate(_edited(path, tmp_path, with_harmonic))
 
 
 @pytest.mark.slow

@@ -76,3 +76,27 @@ def test_certify_and_the_design_refuse_an_unknown_design_effort():
         certify(BladeParameters.table_i("forward"), 0.0, design="heroic")
     with pytest.raises(ValueError, match=r"effort must be one of \('default', 'thorough'\)"):
         designed_function(Blade(BladeParameters.table_i("forward"), 0.0), None, "energy", effort="heroic")
+
+
+@pytest.mark.parametrize("harmonics", [-1, 1.5, True, "2"])
+def test_certify_refuses_harmonics_that_are_not_a_count(harmonics):
+    """Before any work, with what is allowed."""
+    with pytest.raises(ValueError, match="harmonics must be None or an integer >= 0"):
+        certify(BladeParameters.flight_case("forward"), 0.1, harmonics=harmonics)
+
+
+def test_harmonics_of_the_azimuth_are_refused_where_the_blade_does_not_depend_on_it():
+    """In hover the engine searches a designed function at one azimuth: a W with harmonics of the
+    azimuth would be checked at psi = 0 only, so none is designed or built (certify, the design and
+    both bases say why)."""
+    from rotorlyap.analysis.nonlinear_functions import designed_function, energy_basis, polynomial_basis
+
+    with pytest.raises(ValueError, match=r"0 or None in hover"):
+        certify(BladeParameters.table_i("forward"), 0.0, harmonics=1)
+    blade = Blade(BladeParameters.table_i("forward"), 0.0)
+    for build in (energy_basis, polynomial_basis):
+        with pytest.raises(ValueError, match="harmonics must be 0 where the disturbed blade does not depend"):
+            build(blade, None, harmonics=2)
+    with pytest.raises(ValueError, match="harmonics must be 0 where the disturbed blade does not depend"):
+        designed_function(blade, None, "energy", harmonics=1)
+    assert energy_basis(blade, None, harmonics=0).size == 22  # the energy and 21 quadratic forms

@@ -296,6 +296,7 @@ def test_the_progress_bar_on_a_terminal_is_a_tqdm_bar_ending_at_the_total():
         (["analyse", "--mu", "fast"], "--mu must be a number"),
         (["analyse", "--cg", "middle"], "invalid choice: 'middle'"),
         (["certify", "--design", "heroic"], "invalid choice: 'heroic' (choose from 'default', 'thorough')"),
+        (["certify", "--harmonics", "-1"], "--harmonics must be an integer >= 0"),
         (["analyse", "--A", "-1"], "--A must lie in (0, 1000]"),
         (["analyse", "--scales", "1 2 3"], "--scales must be 6 positive numbers"),
         (["analyse", "--n-psi", "0"], "--n-psi must be an integer >= 1"),
@@ -318,6 +319,15 @@ def test_bad_arguments_give_a_message_and_a_non_zero_exit(args, message):
     out = run(*args)
     assert out.returncode == 2
     assert message in out.stderr
+
+
+def test_harmonics_in_hover_are_refused_before_any_work_with_exit_status_1():
+    """The library's refusal (certify: a designed function of the autonomous blade has constant
+    coefficients) reaches the shell as one line, exit status 1, no traceback."""
+    out = run("certify", "--harmonics", "2")
+    assert out.returncode == 1
+    assert "harmonics must be None or an integer >= 0, and 0 or None in hover" in out.stderr
+    assert "Traceback" not in out.stderr and "trim" not in out.stderr
 
 
 def test_a_bad_grid_value_gives_a_message_and_exit_status_1(capsys, tmp_path):

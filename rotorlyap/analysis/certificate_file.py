@@ -84,7 +84,7 @@ from ..model.blade import Blade
 from ..model.forward_trim import TRIM_TARGETS
 from ..model.parameters import BladeParameters
 from ..model.steady import SteadyMotion, TabulatedMotion, disturbed_rhs
-from ..reporting import format_small
+from ..reporting import count, format_small
 from .functions import QuadraticFunction
 from .nonlinear_functions import (DESIGN_EFFORTS, FAMILIES, DesignedFunction, energy_basis, energy_reference,
                                   is_autonomous, polynomial_basis)
@@ -549,6 +549,9 @@ def _read_designed(r: _Fields, fun: dict, family: str, blade: Blade, steady: Ste
                    a: np.ndarray) -> DesignedFunction:
     w = "function"
     harmonics = r.integer(fun, "harmonics", w)
+    if harmonics < 0 or (harmonics and is_autonomous(blade, steady)):
+        raise r.fail("function.harmonics", "must be 0 where the disturbed blade does not depend on the azimuth "
+                                           f"(hover about a constant steady motion), else >= 0, got {harmonics!r}")
     degrees = r.get(fun, "degrees", w)
     if not isinstance(degrees, list) or not degrees or not all(isinstance(d, int) and not isinstance(d, bool)
                                                                and d >= 2 for d in degrees):
@@ -689,6 +692,9 @@ class Verification:
         The claimed level ``c``.
     start_region : float
         The smallest claimed start radius, scaled norm.
+    harmonics : int
+        A designed function's harmonics of the azimuth in its coefficients (0: constant ones, and
+        for the quadratic function, whose ``P(psi)`` is tabulated).
     """
 
     path: str
@@ -700,6 +706,7 @@ class Verification:
     bound: float
     level: float
     start_region: float
+    harmonics: int = 0
 
     def __getitem__(self, name: str) -> Check:
         for check in self.checks:
@@ -712,7 +719,9 @@ class Verification:
         to 3 significant digits, margins to 2; round-off-level numbers as bounds,
         :func:`rotorlyap.reporting.format_small`); a failing check adds its numbers."""
         head = (f"{'VERIFIED' if self.holds else 'REFUSED'}: mu = {self.mu:g}, {_CONDITION_WORDS[self.condition]}, "
-                f"{FAMILY_WORDS[self.function]}, bound A = {self.bound:.3g}, start region {self.start_region:.3g} "
+                f"{FAMILY_WORDS[self.function]}"
+                + (f" ({count(self.harmonics, 'harmonic')} of the azimuth)" if self.harmonics else "")
+                + f", bound A = {self.bound:.3g}, start region {self.start_region:.3g} "
                 "(scaled norm)")
         lines = [head]
         width = max(len(c.name) for c in self.checks)
@@ -814,4 +823,5 @@ def verify(path: str | Path, *, prove: bool = False) -> Verification:
         checks.append(_proof_check(stored))
     return Verification(path=str(stored.path), holds=all(c.holds for c in checks), checks=tuple(checks),
                         mu=stored.mu, condition=stored.condition, function=stored.family, bound=stored.A,
-                        level=stored.level, start_region=float(np.min(stored.lambda0)))
+                        level=stored.level, start_region=float(np.min(stored.lambda0)),
+                        harmonics=0 if isinstance(fun, QuadraticFunction) else int(stored.data["function"]["harmonics"]))

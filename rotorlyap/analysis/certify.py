@@ -251,7 +251,7 @@ class Certificate:
 
 def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", function: str = "auto",
             A: float | None = None, scales=None, n_psi: int = 36, Q=None, verify: bool = False,
-            refine: bool | None = None, design: str = "default",
+            refine: bool | None = None, design: str = "default", harmonics: int | None = None,
             **engine_options) -> Certificate:
     """Certify technical stability of the blade's trimmed steady motion at ``mu``.
 
@@ -302,6 +302,12 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         :data:`rotorlyap.analysis.nonlinear_functions.DESIGN_EFFORTS`: ``"default"``, or
         ``"thorough"`` (more counterexample rounds and bisection steps: larger start regions where
         the default's rounds run out, in minutes instead of tens of seconds in forward flight).
+    harmonics : int, optional
+        In forward flight, the harmonics of the azimuth in a designed function's quadratic
+        coefficients (:func:`rotorlyap.analysis.nonlinear_functions.designed_function`; default 1;
+        in hover they are constant and only None or 0 is taken). More harmonics shape the
+        function per azimuth; whether that reaches further depends on the case (the book's
+        files, ``tools/make_certificates.py``, measured it).
     **engine_options
         Passed on to :func:`rotorlyap.technical_stability` (``n_sphere``, ...).
 
@@ -322,6 +328,10 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
     if design not in DESIGN_EFFORTS:
         raise ValueError(f"design must be one of {tuple(DESIGN_EFFORTS)}, got {design!r}")
+    if harmonics is not None and (isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer))
+                                  or harmonics < 0 or (harmonics and float(mu) == 0.0)):
+        raise ValueError(f"harmonics must be None or an integer >= 0, and 0 or None in hover (mu = 0), "
+                         f"got {harmonics!r} at mu = {mu!r}")
     report(f"trim ({condition}, mu = {float(mu):g})")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
@@ -350,7 +360,8 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
             if family == "quadratic":
                 functions.append(quadratic_function(blade, st, Q, scales=a))
             else:
-                functions.append(designed_function(blade, st, family, scales=a, effort=design))
+                functions.append(designed_function(blade, st, family, scales=a, effort=design,
+                                                   harmonics=harmonics))
                 if not functions[-1].designed:
                     raise _NotDesigned(functions[-1])
             return functions[-1]

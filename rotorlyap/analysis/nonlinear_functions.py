@@ -124,10 +124,16 @@ def _check_scales(scales) -> np.ndarray:
 
 
 def _harmonics(blade: Blade, steady: SteadyMotion, harmonics: int | None) -> int:
+    autonomous = is_autonomous(blade, steady)
     if harmonics is None:
-        return 0 if is_autonomous(blade, steady) else 1
+        return 0 if autonomous else 1
     if isinstance(harmonics, bool) or int(harmonics) != harmonics or harmonics < 0:
         raise ValueError(f"harmonics must be an integer >= 0, got {harmonics!r}")
+    if autonomous and harmonics:
+        # the engine searches such a function at one azimuth (its ``autonomous`` option): a W that
+        # depends on the azimuth would be checked at psi = 0 only
+        raise ValueError(f"harmonics must be 0 where the disturbed blade does not depend on the azimuth "
+                         f"(hover without cyclic pitch, about a constant steady motion), got {harmonics!r}")
     return int(harmonics)
 
 
@@ -300,7 +306,8 @@ def designed_function(blade: Blade, steady=None, family: str = "energy", *, scal
     scales : array_like, optional
         The norm's ``a_i``; default :data:`rotorlyap.conventions.DEFAULT_SCALES`.
     harmonics : int, optional
-        Harmonics of the azimuth in the quadratic coefficients (default: 0 in hover, 1 otherwise).
+        Harmonics of the azimuth in the quadratic coefficients (default: 0 where the disturbed blade
+        is autonomous, :func:`is_autonomous`, 1 otherwise; it must be 0 where it is autonomous).
     lam_start, lam_max : float
         Range of start radii searched, scaled norm.
     ratios : sequence of float
