@@ -33,7 +33,10 @@ counterexamples added round by round):
 ``"polynomial"``
     ``W = sum c_e(psi) y^e`` over the monomials of degree 2 to 4 of the scaled state: the cubic
     and quartic terms can cancel the quadratic part of the accelerations to their own order, as
-    a truncated power series of Zubov's equation would, without knowing the physics.
+    a truncated power series of Zubov's equation would, without knowing the physics. Its linear
+    programs are large (203 coefficients in hover): measured 2026-12-06, the forward C.G.'s
+    design in hover in chapter 11's norm, searched from the start radius 2, had not finished after
+    19 minutes of one core (the augmented energy's: 10 s), so ``certify``'s default does not try it.
 
 Both are certified the same way as every function of the report: by the engine's sound rule
 (:func:`rotorlyap.technical_stability`) afterwards, on the shell between the largest ball inside
