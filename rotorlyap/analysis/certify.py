@@ -328,13 +328,16 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
         raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
     if design not in DESIGN_EFFORTS:
         raise ValueError(f"design must be one of {tuple(DESIGN_EFFORTS)}, got {design!r}")
+    bad_harmonics = (f"harmonics must be None or an integer >= 0, and 0 or None in hover (mu = 0), "
+                     f"got {harmonics!r} at mu = {mu!r}")
     if harmonics is not None and (isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer))
-                                  or harmonics < 0 or (harmonics and float(mu) == 0.0)):
-        raise ValueError(f"harmonics must be None or an integer >= 0, and 0 or None in hover (mu = 0), "
-                         f"got {harmonics!r} at mu = {mu!r}")
+                                  or harmonics < 0):
+        raise ValueError(bad_harmonics)
     report(f"trim ({condition}, mu = {float(mu):g})")
     trim = forward_flight_trim(params, float(mu), condition)
     mu = trim.mu
+    if harmonics and mu == 0.0:  # before any design: in hover the coefficients are constant
+        raise ValueError(bad_harmonics)
     refine = bool(verify) if refine is None else bool(refine)
     report("steady motion" + (" (refined by shooting)" if mu and refine else ""))
     if mu == 0.0:
