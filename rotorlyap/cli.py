@@ -704,7 +704,8 @@ def certificate_json(cert, case: dict, *, n_psi: int, n_sphere: int) -> dict:
         "kind": f"strict reading, sound rule, {function} about the trim's steady "
                 "motion: a numerical certificate where certified",
         "function": cert.function,
-        **({"design": cert.lyapunov.effort} if cert.function in FAMILIES and cert.lyapunov is not None else {}),
+        **({"design": cert.lyapunov.effort, "harmonics": cert.lyapunov.harmonics}
+           if cert.function in FAMILIES and cert.lyapunov is not None else {}),
         "candidates": [{"function": k.function, "certified": bool(k.certified), "bound": _sig(k.bound),
                         "start_region": _sig(k.start_region)} for k in cert.candidates],
         "bound": _sig(cert.bound),

@@ -330,7 +330,8 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
     assert stored.data["function"]["design"]["effort"] == "default" == stored.function.effort
     from rotorlyap.cli import certificate_json
 
-    assert certificate_json(cert, {"params": "Table I", "cg": "forward"}, n_psi=8, n_sphere=1024)["design"] == "default"
+    told = certificate_json(cert, {"params": "Table I", "cg": "forward"}, n_psi=8, n_sphere=1024)
+    assert (told["design"], told["harmonics"]) == ("default", 0) == (stored.function.effort, stored.function.harmonics)
 
     def unknown_effort(d):
         d["function"]["design"]["effort"] = "heroic"

@@ -28,3 +28,19 @@ def test_the_book_ships_its_forward_flight_certificate_files():
     assert {p.name for p in FOLDER.glob("*.json")} >= {"forward_mu010.json", "forward_mu020.json",
                                                        "forward_mu025.json", "hover_forward.json",
                                                        "hover_neutral.json", "hover_backward.json"}
+
+
+def test_each_forward_flight_file_holds_the_harmonics_its_maker_chose():
+    """The files are what ``tools/make_certificates.py`` says it makes: the harmonics of the
+    azimuth in each designed function (``HARMONICS``, chosen by measurement) read back from the
+    file's basis, and the thorough design's effort."""
+    import importlib.util
+
+    from rotorlyap.analysis.certificate_file import read_certificate
+
+    spec = importlib.util.spec_from_file_location("make_certificates", FOLDER.parents[1] / "tools" / "make_certificates.py")
+    maker = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(maker)
+    for mu, harmonics in maker.HARMONICS.items():
+        fun = read_certificate(maker.path_for(mu)).function
+        assert (fun.harmonics, fun.effort) == (harmonics, maker.DESIGN["forward flight"]), mu

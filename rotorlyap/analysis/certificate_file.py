@@ -209,19 +209,11 @@ def _degree(name: str) -> int:
     return sum(int(p.partition("^")[2] or 1) for p in name.split("*") if "(" not in p)
 
 
-def _harmonic(name: str) -> int:
-    """The harmonic of the azimuth in a basis name (``"flap*lag*sin(2psi)"`` -> 2; 0 without)."""
-    for p in name.split("*"):
-        if p.endswith("psi)"):
-            return int(p[p.index("(") + 1:-4])
-    return 0
-
-
 def _designed_json(fun: DesignedFunction) -> dict:
     bf, d = fun.function, fun.design
     names = list(bf.basis.names)
     monomials = [n for n in names if n != "energy"]
-    data = {"family": fun.family, "label": fun.label, "harmonics": max([_harmonic(n) for n in names] + [0]),
+    data = {"family": fun.family, "label": fun.label, "harmonics": fun.harmonics,
             "degrees": sorted({_degree(n) for n in monomials}), "names": names,
             "coefficients": _floats(bf.coefficients),
             "design": {"lam": float(d.lam), "A": float(d.A), "margin": float(d.margin), "feasible": bool(d.feasible),
@@ -824,4 +816,4 @@ def verify(path: str | Path, *, prove: bool = False) -> Verification:
     return Verification(path=str(stored.path), holds=all(c.holds for c in checks), checks=tuple(checks),
                         mu=stored.mu, condition=stored.condition, function=stored.family, bound=stored.A,
                         level=stored.level, start_region=float(np.min(stored.lambda0)),
-                        harmonics=0 if isinstance(fun, QuadraticFunction) else int(stored.data["function"]["harmonics"]))
+                        harmonics=0 if isinstance(fun, QuadraticFunction) else fun.harmonics)

@@ -123,6 +123,14 @@ def mode_directions(blade: Blade, steady: SteadyMotion, scales) -> np.ndarray:
     return parts / np.linalg.norm(parts, axis=1, keepdims=True)
 
 
+def _name_harmonic(name: str) -> int:
+    """The harmonic of the azimuth in a basis name (``"flap*lag*sin(2psi)"`` -> 2; 0 without)."""
+    for part in name.split("*"):
+        if part.endswith("psi)"):
+            return int(part[part.index("(") + 1:-4])
+    return 0
+
+
 def _check_scales(scales) -> np.ndarray:
     a = np.asarray(DEFAULT_SCALES if scales is None else scales, dtype=float).reshape(-1)
     if a.size != 6 or not np.all(np.isfinite(a)) or np.any(a <= 0):
@@ -266,6 +274,12 @@ class DesignedFunction:
         if self.design.function is None:
             raise ValueError(f"the {self.family} design found no function: {self.design!r}")
         return self.design.function
+
+    @property
+    def harmonics(self) -> int:
+        """The highest harmonic of the azimuth in the basis (0: constant coefficients), read from
+        the basis names (``"beta*zeta*sin(2psi)"`` is of the second)."""
+        return max([_name_harmonic(n) for n in self.function.basis.names] + [0])
 
     @property
     def designed(self) -> bool:
