@@ -350,7 +350,7 @@ def test_a_designed_energy_certificate_round_trips_and_a_coefficient_edit_is_ref
                                                                         scales=cert.scales).names[1:]] * 3
         d["function"]["coefficients"] = d["function"]["coefficients"] + [0.0] * 42
 
-    with pytest.raises(CertificateFileError, match=r"function.harmonics: must be 0 where the disturbed blade"):
+    with pytest.raises(CertificateFileError, match=r"function.harmonics: harmonics must be 0 where the disturbed blade"):
         read_certificate(_edited(path, tmp_path, with_harmonic))
 
 

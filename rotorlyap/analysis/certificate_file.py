@@ -86,8 +86,8 @@ from ..model.parameters import BladeParameters
 from ..model.steady import SteadyMotion, TabulatedMotion, disturbed_rhs
 from ..reporting import count, format_small
 from .functions import QuadraticFunction
-from .nonlinear_functions import (DESIGN_EFFORTS, FAMILIES, DesignedFunction, energy_basis, energy_reference,
-                                  is_autonomous, polynomial_basis)
+from .nonlinear_functions import (DESIGN_EFFORTS, FAMILIES, DesignedFunction, basis_harmonics, energy_basis,
+                                  energy_reference, is_autonomous, polynomial_basis)
 from .stability import psi_free_system
 
 __all__ = ["FAMILY_WORDS", "FORMAT", "STEADY_RESIDUAL_TOL", "VERSION", "StoredCertificate", "Verification", "read_certificate",
@@ -540,10 +540,10 @@ def _or_nan(value: float | None) -> float:
 def _read_designed(r: _Fields, fun: dict, family: str, blade: Blade, steady: SteadyMotion,
                    a: np.ndarray) -> DesignedFunction:
     w = "function"
-    harmonics = r.integer(fun, "harmonics", w)
-    if harmonics < 0 or (harmonics and is_autonomous(blade, steady)):
-        raise r.fail("function.harmonics", "must be 0 where the disturbed blade does not depend on the azimuth "
-                                           f"(hover about a constant steady motion), else >= 0, got {harmonics!r}")
+    try:  # the bases' own rule: >= 0, and 0 where the blade is autonomous
+        harmonics = basis_harmonics(blade, steady, r.integer(fun, "harmonics", w))
+    except ValueError as exc:
+        raise r.fail("function.harmonics", str(exc)) from None
     degrees = r.get(fun, "degrees", w)
     if not isinstance(degrees, list) or not degrees or not all(isinstance(d, int) and not isinstance(d, bool)
                                                                and d >= 2 for d in degrees):

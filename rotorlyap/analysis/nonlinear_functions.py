@@ -58,7 +58,7 @@ from ..model.steady import SteadyMotion, as_steady_motion, disturbed_rhs
 from .functions import EnergyFunction, energy_function
 
 __all__ = ["DESIGN_EFFORTS", "FAMILIES", "LAM_MAX", "LAM_START", "N_BISECT", "RATIOS", "DesignedFunction",
-           "designed_function", "energy_basis", "energy_reference", "is_autonomous",
+           "basis_harmonics", "designed_function", "energy_basis", "energy_reference", "is_autonomous",
            "mode_directions", "polynomial_basis"]
 
 FAMILIES = ("energy", "polynomial")
@@ -138,7 +138,16 @@ def _check_scales(scales) -> np.ndarray:
     return a
 
 
-def _harmonics(blade: Blade, steady: SteadyMotion, harmonics: int | None) -> int:
+def basis_harmonics(blade: Blade, steady: SteadyMotion, harmonics: int | None) -> int:
+    """The harmonics of the azimuth a basis of the blade takes: ``None`` gives 0 where the disturbed
+    blade is autonomous (:func:`is_autonomous`) and 1 otherwise; an integer >= 0 is kept.
+
+    Raises
+    ------
+    ValueError
+        Not an integer >= 0, or harmonics where the blade is autonomous (the engine searches such
+        a function at one azimuth).
+    """
     autonomous = is_autonomous(blade, steady)
     if harmonics is None:
         return 0 if autonomous else 1
@@ -206,7 +215,7 @@ def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | Non
         raise ValueError(f"the energy's reference H_ref must be finite and > 0 J, got {reference!r}")
     energy = Basis(("energy",), lambda psi, x: (fun.W(psi, x) / size)[:, None],
                    lambda psi, x: (fun.dW(psi, x) / size)[:, None])
-    k = _harmonics(blade, steady, harmonics)
+    k = basis_harmonics(blade, steady, harmonics)
     forms = monomial_basis(fun.f, a, (2,), harmonics=k, names=STATE_NAMES)
 
     def rate_of(psi, x, c):  # the energy's W' and the f its quadratic forms need, from one kernel
@@ -229,7 +238,7 @@ def polynomial_basis(blade: Blade, steady=None, *, scales=None, degrees=(2, 3, 4
     a = _check_scales(scales)
     steady = as_steady_motion(steady, blade)
     f = disturbed_rhs(blade, steady)
-    k = _harmonics(blade, steady, harmonics)
+    k = basis_harmonics(blade, steady, harmonics)
     higher = tuple(d for d in degrees if d > 2)
     basis = monomial_basis(f, a, (2,), harmonics=k, names=STATE_NAMES)
     if higher:
