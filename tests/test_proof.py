@@ -395,3 +395,39 @@ def test_a_forward_flight_case_is_proved():
     x = (u * r[:, None] * q.scales)[ok]
     assert ok.sum() > 1000
     assert np.all(q.dW(psi[ok], x) < 0)
+    # what limits it (chapter 10's account, on 16 model intervals to keep the test short): the
+    # models' remainder over the cube of the proved bound is largest on the retreating side, it
+    # comes from the innermost strips, whose angle of attack there reaches past the airfoil's
+    # negative stall, and without their air loads it is no larger than on the advancing side
+    from rotorlyap.analysis.proof import remainder_sources
+
+    src = remainder_sources(cert.lyapunov, proof.A, n_models=16)
+    k = src.worst
+    assert src.psi[k] > np.pi
+    assert len(src.sources) >= 1 and src.sources == tuple(range(len(src.sources)))
+    assert np.min(src.angles[list(src.sources), 0]) < cert.trim.params.airfoil.alpha_stall_negative
+    assert np.all(src.without[list(src.sources)] < src.remainder[k])
+    assert src.without_sources <= src.remainder[src.psi < np.pi].max()
+    assert f"psi = {np.degrees(src.psi[k]):.0f} deg" in src.summary()
+
+
+def test_remainder_sources_in_hover_and_bad_input():
+    """In hover (one interval) the Table I blade's small remainder is carried by no single strip;
+    a bound that is not finite and > 0 is refused; strips of the wrong count are refused."""
+    from rotorlyap.analysis.enclosure import BladeEnclosure
+    from rotorlyap.analysis.functions import quadratic_function
+    from rotorlyap.analysis.proof import remainder_sources
+    from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
+
+    blade = Blade(BladeParameters.table_i("forward"), 0.0)
+    fun = quadratic_function(blade)
+    src = remainder_sources(fun, 0.5)
+    assert src.psi.shape == (1,) and src.sources == () and src.without_sources == src.remainder[0]
+    assert np.all(np.isfinite(src.angles)) and np.all(src.angles[:, 0] <= src.angles[:, 1])
+    assert "no strip" in src.summary()
+    for bad in (0.0, -1.0, np.nan, np.inf):
+        with pytest.raises(ValueError, match="bound must be finite"):
+            remainder_sources(fun, bad)
+    enc = BladeEnclosure(blade, None, arithmetic="balls")
+    with pytest.raises(ValueError, match="one flag per aerodynamic station"):
+        taylor_evaluate(enc, np.zeros(6), np.full(6, 1e-3), 2, strips=[True, False])

@@ -24,12 +24,15 @@ counterexamples added round by round):
     plus every quadratic form of the scaled state ``y = x / a``, with coefficients constant in
     hover and trigonometric polynomials of the azimuth in forward flight. The quadratic part
     supplies the cross and correction terms that cancel the aerodynamic coupling the energy
-    lacks; its derivative ``2 y^T C f / a`` still meets the inertial terms. Measured (chapter 11,
-    :func:`rotorlyap.chapters.large_disturbances.anatomy`), the program gives the energy no weight
-    for the Table I forward C.G. in hover (a quadratic form designed on the shell certifies
-    alone), a small one for the neutral C.G. and a negative one for the trimmed helicopter at
-    mu = 0.1: the family's reach comes from shaping the quadratic form for the nonlinear blade
-    on the shell where the theorem asks ``W' < 0``, more than from the energy.
+    lacks; its derivative ``2 y^T C f / a`` still meets the inertial terms. How much the program
+    leans on the energy depends on the case and its norm: measured 2026-12-06 on the certificate
+    files the book ships (chapter 11's :func:`rotorlyap.chapters.large_disturbances.anatomy`, the
+    energy term's share of ``W`` on the start sphere), none for the Table I neutral C.G. in hover
+    (a quadratic form designed on the shell certifies alone), 9 % for the backward C.G., 19 % for
+    the trimmed helicopter at mu = 0.2, and 81 % and 83 % for the forward C.G. in hover and the
+    trimmed helicopter at mu = 0.1. Either way the quadratic form shaped for the nonlinear blade on
+    the shell where the theorem asks ``W' < 0`` is what carries the family past the quadratic
+    function of the Lyapunov equation: where the energy has no weight it does so alone.
 ``"polynomial"``
     ``W = sum c_e(psi) y^e`` over the monomials of degree 2 to 4 of the scaled state: the cubic
     and quartic terms can cancel the quadratic part of the accelerations to their own order, as

@@ -77,8 +77,8 @@ FLIGHT_SHELLS = 0.8
 for 0.70): ratio 0.9 or 0.85 from the first bound 0.8, with 32 or 64 model intervals, fail at
 0.8 and prove 0.72, in 81 to 86 s."""
 
-__all__ = ["BladeProofSystem", "EnclosureWidth", "designed_quadratic_form", "enclosure_width", "proof_problem",
-           "prove_blade", "prove_designed"]
+__all__ = ["BladeProofSystem", "EnclosureWidth", "RemainderSources", "designed_quadratic_form", "enclosure_width",
+           "proof_problem", "prove_blade", "prove_designed", "remainder_sources"]
 
 
 def _spread(balls: np.ndarray, blocked: dict, rep: int):
@@ -132,10 +132,7 @@ class BladeProofSystem:
         """
         from ..methods.balls import Balls
 
-        if self._float_enclosure is None:
-            self._float_enclosure = (self.enclosure if self.enclosure.arithmetic == "balls"
-                                     else BladeEnclosure(self._blade, self._steady, arithmetic="balls"))
-        enc = self._float_enclosure
+        enc = self.float_enclosure()
         r = np.asarray(radius, dtype=float)
         if enc.constant:
             ev = taylor_evaluate(enc, np.zeros(6), r, order)
@@ -166,6 +163,13 @@ class BladeProofSystem:
         reason = "the Taylor models are not finite (relative wind may vanish, or reverse flow)"
         blocked = {reason: bad} if bad.any() else {}
         return coef, rem, exps, blocked
+
+    def float_enclosure(self) -> BladeEnclosure:
+        """The blade's enclosure in float balls (the Taylor models' arithmetic), made once."""
+        if self._float_enclosure is None:
+            self._float_enclosure = (self.enclosure if self.enclosure.arithmetic == "balls"
+                                     else BladeEnclosure(self._blade, self._steady, arithmetic="balls"))
+        return self._float_enclosure
 
     def _coarse(self, N: int) -> int:
         if self.enclosure.constant:
@@ -544,3 +548,128 @@ def enclosure_width(blade, steady=None, bound: float = 0.1, *, scales=None, samp
 def _without_air(blade):
     """The blade with its air loads switched off (density zero)."""
     return Blade(replace(blade.params, air_density=0.0), blade.mu)
+
+
+SOURCE_SHARE = 0.1
+"""A strip is a source of :func:`remainder_sources`' largest remainder where leaving its air loads
+out lowers that remainder by at least this fraction."""
+
+
+@dataclass(frozen=True)
+class RemainderSources:
+    """Where the remainder of the averaged Jacobian's Taylor models comes from (:func:`remainder_sources`).
+
+    Attributes
+    ----------
+    bound : float
+        Half-width of the cube of the models, scaled norm.
+    psi : numpy.ndarray, shape (N,)
+        Midpoints of the models' azimuth intervals, rad (one, 0, in hover).
+    remainder : numpy.ndarray, shape (N,)
+        Per interval, the largest remainder of the models (scaled coordinates, per rad of azimuth).
+    worst : int
+        The interval of the largest remainder.
+    station : numpy.ndarray, shape (n_strips,)
+        The strips' radii over the rotor radius, -.
+    angles : numpy.ndarray, shape (n_strips, 2)
+        Each strip's angle of attack over the cube, on the worst interval: lower and upper bound, rad.
+    without : numpy.ndarray, shape (n_strips,)
+        The worst interval's largest remainder with each strip's air loads left out.
+    sources : tuple of int
+        The strips whose loads left out lower it by at least :data:`SOURCE_SHARE`.
+    without_sources : float
+        The worst interval's largest remainder with the air loads of every source left out.
+    """
+
+    bound: float
+    psi: np.ndarray
+    remainder: np.ndarray
+    worst: int
+    station: np.ndarray
+    angles: np.ndarray
+    without: np.ndarray
+    sources: tuple
+    without_sources: float
+
+    def __repr__(self) -> str:  # short and stable: no arrays
+        return (f"RemainderSources(bound={self.bound:.3g}, largest {self.remainder[self.worst]:.2g} at psi = "
+                f"{np.degrees(self.psi[self.worst]):.0f} deg, sources {self.sources})")
+
+    def summary(self) -> str:
+        """Two lines: the largest remainder and where, then its sources (2 significant digits, deg)."""
+        k = self.worst
+        adv = self.psi < np.pi
+        head = (f"Taylor-model remainder over the cube {self.bound:.3g}: largest {self.remainder[k]:.2g} at psi = "
+                f"{np.degrees(self.psi[k]):.0f} deg" + (f" (advancing side at most {self.remainder[adv].max():.2g})"
+                                                         if adv.any() and not adv[k] else ""))
+        parts = [f"r/R = {self.station[i]:.2f} (angle of attack {np.degrees(self.angles[i, 0]):.0f} to "
+                 f"{np.degrees(self.angles[i, 1]):.0f} deg; without it {self.without[i]:.2g})" for i in self.sources]
+        tail = ("    from the strips at " + ", ".join(parts) + f"; without all of them {self.without_sources:.2g}"
+                if parts else "    no strip's air loads carry a share of it")
+        return head + "\n" + tail
+
+
+def remainder_sources(fun: QuadraticFunction, bound: float, *, n_models: int | None = None,
+                      order: int | None = None) -> RemainderSources:
+    """Which strips' air loads make the Taylor models' remainder large, over the cube ``|y_i| <= bound``.
+
+    The averaged Jacobian's models of :meth:`BladeProofSystem.jacobian_models` (what
+    :func:`prove_blade` takes) over the cube, their largest remainder per azimuth interval (scaled
+    coordinates), and on the interval where it is largest the same with each strip's air loads
+    left out in turn (:func:`rotorlyap.analysis.taylor_enclosure.taylor_evaluate`'s ``strips``),
+    then with every strip that carries at least :data:`SOURCE_SHARE` of it left out together. A
+    measurement of what limits the proof (chapter 10): a model without some strips is another
+    blade's, and proves nothing about this one.
+
+    Parameters
+    ----------
+    fun : QuadraticFunction
+        The function of the proof (its blade, steady motion and scales).
+    bound : float
+        Half-width of the cube, scaled norm (> 0).
+    n_models : int, optional
+        Azimuth intervals of the models (default :func:`prove_blade`'s: 1 in hover, else
+        :data:`DEFAULT_MODEL_INTERVALS`).
+    order : int, optional
+        Order of the models (default :func:`prove_blade`'s).
+
+    Returns
+    -------
+    RemainderSources
+    """
+    import inspect
+
+    bound = float(bound)
+    if not (np.isfinite(bound) and bound > 0):
+        raise ValueError(f"bound must be finite and > 0, got {bound!r}")
+    if order is None:
+        order = int(inspect.signature(prove_blade).parameters["order"].default)
+    system, _, _ = proof_problem(fun)
+    enc = system.float_enclosure()
+    N = None if enc.constant else int(DEFAULT_MODEL_INTERVALS if n_models is None else n_models)
+    a = np.asarray(fun.scales, dtype=float)
+    n_strips = enc.st.shape[1]
+
+    def evaluate(strips=None):
+        ev = taylor_evaluate(enc, np.zeros(6), bound * a, order, n_intervals=N, strips=strips)
+        K = ev.jacobian.ray_average() if N is None else ev.jacobian.ray_average(over=range(6))
+        rem = np.asarray(K.rem, dtype=float).reshape(-1, 6, 6) * a[None, None, :] / a[None, :, None]
+        angles = None if ev.angles is None else np.asarray(ev.angles).reshape(-1, n_strips, 2)
+        return np.max(rem, axis=(1, 2)), angles
+
+    remainder, angles = evaluate()
+    k = int(np.argmax(remainder))
+    without = np.empty(n_strips)
+    for i in range(n_strips):
+        mask = np.ones(n_strips, dtype=bool)
+        mask[i] = False
+        without[i] = evaluate(mask)[0][k]
+    sources = tuple(int(i) for i in np.flatnonzero(without <= (1.0 - SOURCE_SHARE) * remainder[k]))
+    mask = np.ones(n_strips, dtype=bool)
+    mask[list(sources)] = False
+    rest = float(evaluate(mask)[0][k]) if sources else float(remainder[k])
+    psi = np.zeros(1) if N is None else 2 * np.pi * (np.arange(N) + 0.5) / N
+    station = np.asarray(fun.blade.r, dtype=float) / float(fun.blade.params.radius)
+    ang = np.full((n_strips, 2), np.nan) if angles is None else angles[k]
+    return RemainderSources(bound=bound, psi=psi, remainder=remainder, worst=k, station=station, angles=ang,
+                            without=without, sources=sources, without_sources=rest)

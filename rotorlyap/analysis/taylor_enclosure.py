@@ -79,6 +79,10 @@ class TaylorEvaluation:
         ``psi = 2 pi (k + 1/2) / n + (pi / n) tau``), or None (hover, six variables). Boxes with no
         enclosure (the relative wind may vanish; a compressible section's angle of attack may
         cross +-90 deg) have non-finite models.
+    angles : numpy.ndarray or None
+        Shape ``batch + (n_strips, 2)``: the range (lower, upper bound) of each strip's angle of
+        attack over each box, rad (NaN where the relative wind may vanish); None for a blade
+        without air loads.
     """
 
     value: TaylorModel
@@ -87,6 +91,7 @@ class TaylorEvaluation:
     radius: np.ndarray
     order: int
     n_intervals: int | None = None
+    angles: np.ndarray | None = None
 
 
 def _unit_gradients(n: int, shape: tuple, sp) -> list[TaylorModel]:
@@ -262,11 +267,13 @@ def _tm_pos4(x: Jet) -> Jet:
                  [(lo > 0, power), (hi < 0, _constant_jet(np.zeros(lo.shape), x, n))])
 
 
-def _air_moments(enc: BladeEnclosure, z: list, T: list, psi):
+def _air_moments(enc: BladeEnclosure, z: list, T: list, psi, strips=None):
     """The strip loads' generalised forces, as the ``_ACTIVE`` branch of
-    ``BladeEnclosure._accelerations``; ``psi`` the azimuth (a model, or None in hover), and a
+    ``BladeEnclosure._accelerations``; ``psi`` the azimuth (a model, or None in hover), a
     boolean array of the boxes where no enclosure exists (the relative wind may vanish, or a
-    compressible section's angle of attack may cross +-90 deg)."""
+    compressible section's angle of attack may cross +-90 deg), and the range of each strip's
+    angle of attack (``batch + (n_strips, 2)``, rad). ``strips``: a boolean per strip, whose loads
+    are summed (None: all)."""
     sc, st = enc.sc, enc.st
     om = float(sc[_OMEGA])
     q_rel = T[12] - T[35] * om
@@ -277,6 +284,7 @@ def _air_moments(enc: BladeEnclosure, z: list, T: list, psi):
     compressible = sc[_COMPRESSIBLE] != 0.0
     blocked = np.zeros(z[0].v.shape, dtype=bool)
     sums = (0.0,) * 5
+    angles = np.full(z[0].v.shape + (st.shape[1], 2), np.nan)
     for k in range(st.shape[1]):
         az = Balls(float(st[_IA, k])) if sc[_UNIFORM] != 0.0 else cpsi * float(st[_IB, k]) + float(st[_IA, k])
         u_y, u_z, V2 = _strip_wind(T, st, k, az, advance)
@@ -285,6 +293,10 @@ def _air_moments(enc: BladeEnclosure, z: list, T: list, psi):
         blocked |= ~alpha.v.finite()
         if sc[_TWISTED] != 0.0:
             alpha = alpha + float(st[_PHI, k])
+        with np.errstate(invalid="ignore"):
+            angles[..., k, 0], angles[..., k, 1] = alpha.v.bounds()
+        if strips is not None and not strips[k]:
+            continue
         cl, cd, cm = _tm_table(enc, alpha)
         pg = 1.0
         if compressible:
@@ -301,7 +313,7 @@ def _air_moments(enc: BladeEnclosure, z: list, T: list, psi):
             cd = cd + WAVE_DRAG_FACTOR * _tm_pos4(dm)
         sums = _add_strip(sums, st, k, u_y, u_z, V2, Vm, (cl, cd, cm), q_rel, pg, sc[_PITCH_DAMPED] != 0.0,
                           compressible)
-    return _generalised_air_forces(T, sums), blocked
+    return _generalised_air_forces(T, sums), blocked, angles
 
 
 def _steady_models(enc: BladeEnclosure, tau: TaylorModel, n: int):
@@ -404,7 +416,7 @@ def _fitted_motion(values: np.ndarray, slopes: np.ndarray, n: int, degree: int =
 
 
 def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
-                    n_intervals: int | None = None) -> TaylorEvaluation:
+                    n_intervals: int | None = None, strips=None) -> TaylorEvaluation:
     """The disturbed equations of the blade on Taylor models over boxes of disturbances.
 
     Parameters
@@ -424,6 +436,11 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         broadcast to ``(n,)`` (one box per interval), and the steady motion (a multiple ``n`` of
         its grid) enters as its exact piecewise cubic (``n`` a divisor of the grid: a cubic in the
         azimuth fitted to the pieces each interval spans, its deviation bounded, :func:`_fitted_motion`).
+    strips : array_like of bool, optional
+        The strips whose air loads enter (one flag per aerodynamic station; default all). Leaving
+        some out encloses another blade than this one: it measures what each strip's loads add to
+        the models' remainders (:func:`rotorlyap.analysis.proof.remainder_sources`), and proves
+        nothing about the blade.
 
     Returns
     -------
@@ -473,8 +490,14 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         _rhs_terms(z[0], z[1], z[2], z[3], z[4], z[5], theta_c, enclosure.params, T)
         F = [T[6 + i] - z[3 + i] * float(sc[(_C0, _C1, _C2)[i]]) for i in range(3)]
         blocked = np.zeros(shape, dtype=bool)
+        angles = None
+        if strips is not None:
+            strips = np.asarray(strips, dtype=bool).reshape(-1)
+            if strips.size != enclosure.st.shape[1]:
+                raise ValueError(f"strips must hold one flag per aerodynamic station ({enclosure.st.shape[1]}), "
+                                 f"got {strips.size}")
         if sc[_ACTIVE] != 0.0:
-            air, blocked = _air_moments(enclosure, z, T, psi)
+            air, blocked, angles = _air_moments(enclosure, z, T, psi, strips)
             F = [f + a for f, a in zip(F, air)]
         om = iv.const(float(sc[_OMEGA]))
         s = 1 / (om * om)
@@ -488,7 +511,7 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         value = tm.where(~blocked[..., None], value, TaylorModel(np.full(value.coef.shape, np.nan), np.nan, sp))
         jac = tm.where(~blocked[..., None, None], jac, TaylorModel(np.full(jac.coef.shape, np.nan), np.nan, sp))
     return TaylorEvaluation(value=value, jacobian=jac, centre=c, radius=r, order=int(order),
-                            n_intervals=None if n_intervals is None else int(n_intervals))
+                            n_intervals=None if n_intervals is None else int(n_intervals), angles=angles)
 
 
 def _as_model(x, shape: tuple, sp) -> TaylorModel:

@@ -2,8 +2,9 @@
 
 * :func:`proof_table`: :func:`rotorlyap.certify` with ``verify=True`` for the Table I hovers and
   one forward-flight case of the trimmed helicopter (Taylor models and branch and bound): bound
-  and start region, numerical and proved, the size of each term of the proof, and the same
-  function proved by ball arithmetic alone for comparison;
+  and start region, numerical and proved, the size of each term of the proof, the same
+  function proved by ball arithmetic alone for comparison, and in forward flight which strips'
+  air loads make the models' remainder large (:func:`rotorlyap.analysis.proof.remainder_sources`);
 * :func:`nonlinear_growth` and :func:`figure_nonlinear_growth`: the ball-arithmetic prover's
   nonlinear term against the bound in hover, as enclosed and as sampled (why balls stop short);
 * :func:`figure_flight_proof`: the forward-flight proof over the period: start radii and the
@@ -20,7 +21,8 @@ import numpy as np
 
 from ..analysis.certify import Certificate, certify
 from ..analysis.functions import quadratic_function
-from ..analysis.proof import FLIGHT_FIRST_CUBE, FLIGHT_SHELLS, proof_problem, prove_blade
+from ..analysis.proof import (FLIGHT_FIRST_CUBE, FLIGHT_SHELLS, RemainderSources, proof_problem, prove_blade,
+                              remainder_sources)
 from ..conventions import DEFAULT_SCALES
 from ..methods.proof import SHELL_CORE, Proof, nonlinear_bounds
 from ..model.blade import Blade
@@ -128,10 +130,14 @@ class ProofTable:
         The flight case: largest residual ``|h(psi, xi) - xi'|`` in the scaled norm of the Fourier
         collocation's periodic motion (tabulated), at 4096 azimuths between its grid points, before
         the shooting refines it (NaN without a flight case).
+    sources : RemainderSources or None
+        The flight case: where the Taylor models' remainder over the cube of the proved bound comes
+        from (:func:`rotorlyap.analysis.proof.remainder_sources`; None without a proved flight case).
     """
 
     rows: tuple[ProofRow, ...]
     collocation_residual: float = float("nan")
+    sources: RemainderSources | None = None
 
     def markdown(self) -> str:
         """The table: bound and start radius, numerical and proved, and their ratio."""
@@ -155,6 +161,8 @@ class ProofTable:
             if r.balls is not None:
                 out.append(f"    ball arithmetic alone (mean-value form): A {r.balls.A:.3g}, lambda0 "
                            f"{r.balls.min_lambda0:.3g}; ratio {r.balls_ratio:.3f}")
+            if r.certificate.mu > 0 and self.sources is not None:
+                out.extend("    " + line for line in self.sources.summary().splitlines())
         return "\n".join(out)
 
     def facts(self) -> dict:
@@ -169,7 +177,8 @@ class ProofTable:
         step of chapter 8's advance-ratio grid ``ch10_mu_step``; the forward-flight proof's shells
         (``ch10_shell_ratio``, ``ch10_shell_core``, ``ch10_first_target``: the settings of
         :func:`rotorlyap.analysis.proof.prove_blade` in forward flight) and its proved bound as a
-        fraction of the numerical one, ``ch10_flight_Afrac`` (2 decimals)."""
+        fraction of the numerical one, ``ch10_flight_Afrac`` (2 decimals); with :attr:`sources`,
+        where the models' remainder comes from (:func:`_source_facts`)."""
         import inspect
 
         from .scans import MU_FORENSIC
@@ -211,6 +220,8 @@ class ProofTable:
             f["ch10_shell_core"] = SHELL_CORE
             f["ch10_first_target"] = FLIGHT_FIRST_CUBE
             f["ch10_flight_Afrac"] = float(f"{proof.A / flight[0].numerical[0]:.2f}")
+            if self.sources is not None:
+                f.update(_source_facts(self.sources, flight[0].certificate.trim.params.airfoil))
         return f
 
     def export(self) -> dict:
@@ -228,6 +239,38 @@ class ProofTable:
         }
 
 
+_COUNT_WORDS = {1: "the", 2: "the two", 3: "the three", 4: "the four"}
+
+
+def _deg(value: float) -> str:
+    """An angle in whole degrees with a true minus sign."""
+    return f"{round(float(np.degrees(value))):d}°".replace("-", "−")
+
+
+def _source_facts(src: RemainderSources, airfoil) -> dict:
+    """``ch10_src_{rem,psi,adv,where,angles,without}`` (2 significant digits, whole deg, words) and
+    ``ch10_stall_neg``, ``ch10_stall_blend`` (the airfoil's negative stall angle and stall blend,
+    whole deg): the text's account of where the forward-flight proof's remainder comes from."""
+    k = src.worst
+    adv = src.psi < np.pi
+    strips = src.sources
+    where = ""
+    if strips:
+        inner = strips == tuple(range(len(strips)))
+        count = _COUNT_WORDS.get(len(strips), f"the {len(strips)}")
+        noun = "strip" if len(strips) == 1 else "strips"
+        radii = " and ".join(f"{src.station[i]:.2f}" for i in strips)
+        where = f"{count} {'innermost ' if inner else ''}{noun} (at {radii} of the rotor radius)"
+    angles = " and ".join(f"from {_deg(src.angles[i, 0])} to {_deg(src.angles[i, 1])}" for i in strips)
+    return {"ch10_src_rem": float(f"{src.remainder[k]:.2g}"),
+            "ch10_src_psi": round(float(np.degrees(src.psi[k]))),
+            "ch10_src_adv": float(f"{src.remainder[adv].max():.2g}") if adv.any() else float("nan"),
+            "ch10_src_where": where, "ch10_src_angles": angles,
+            "ch10_src_without": float(f"{src.without_sources:.2g}"),
+            "ch10_stall_neg": round(float(np.degrees(airfoil.alpha_stall_negative))),
+            "ch10_stall_blend": round(float(np.degrees(airfoil.stall_blend)))}
+
+
 def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
     """:func:`rotorlyap.certify` of the quadratic function with ``verify=True`` for each hover case
     (Table I, hover trim) and the forward-flight case (``None`` to skip it): the trimmed helicopter
@@ -242,12 +285,15 @@ def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
                                                  verify=True))
             for cg in hover_cases]
     residual = float("nan")
+    sources = None
     if flight is not None:
         cg, mu = flight
         cert = certify(BladeParameters.flight_case(cg), float(mu), function="quadratic", verify=True)
         rows.append(row("flight", f"{cg} C.G., mu = {mu:g}, trimmed", cert))
         residual = _collocation_residual(cert)
-    return ProofTable(tuple(rows), residual)
+        if cert.proof is not None and cert.proof.proved:
+            sources = remainder_sources(cert.lyapunov, cert.proof.A)
+    return ProofTable(tuple(rows), residual, sources)
 
 
 def _collocation_residual(cert: Certificate, n: int = 4096) -> float:
