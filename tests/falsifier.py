@@ -333,7 +333,7 @@ def falsify_file(path, *, evaluations: int, n_azimuths: int = 4) -> Attack:
     """:func:`falsify_certificate` on a certificate file (:func:`rotorlyap.verify`'s input): the
     function, level, bound and start radii as the file states them, rebuilt by
     :func:`rotorlyap.analysis.certificate_file.read_certificate`, attacked as a certificate made
-    in this process would be. The attack does not run ``verify`` (chapter 11 does, on the same
+    in this process would be. The attack does not run ``verify`` (chapter 10 does, on the same
     files): it searches for what ``verify``'s searches would have missed."""
     from types import SimpleNamespace
 

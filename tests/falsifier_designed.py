@@ -7,7 +7,7 @@ over the workers).
 The certificate of ``rotorlyap.certify(table_i(cg), 0, condition="none")``, the augmented energy
 of :mod:`rotorlyap.analysis.nonlinear_functions` checked by the sound rule on the shell that holds
 the band, is attacked as the book ships it: the file ``book/certificates/hover_<cg>.json`` that
-``tools/make_certificates.py`` made with that call (chapter 11 verifies the same file; designed
+``tools/make_certificates.py`` made with that call (chapter 10 verifies the same file; designed
 once, not in both). The attack (:func:`falsifier.falsify_file`) goes through the theorem's three
 facts on the band itself (not the shell): the searches of :mod:`falsifier` (pseudo-random points,
 differential evolution, L-BFGS-B; the level along each ray by bisection) with

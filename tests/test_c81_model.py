@@ -33,7 +33,7 @@ MACHS = tuple(np.round(np.arange(0.0, 0.951, 0.05), 2))
 
 
 def _puma() -> BladeParameters:
-    """The shipped Puma blade without pitch-flap coupling (as chapter 9 certifies it)."""
+    """The shipped Puma blade without pitch-flap coupling (as chapter 11 certifies it)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         p = BladeParameters.from_file(EXAMPLE_FILES["sa330-puma"])

@@ -250,7 +250,7 @@ def test_a_polynomial_function_is_rebuilt_from_its_description_and_coefficients(
     rebuilt from family, harmonics and degrees has the stored names, and with the stored
     coefficients it is the same W and W' to the bit (the file's claims are the quadratic
     certificate's, so only the reading is checked here); a description that does not match the
-    names is a CertificateFileError. (Harmonics of the azimuth are read back by chapter 11's
+    names is a CertificateFileError. (Harmonics of the azimuth are read back by chapter 10's
     forward-flight files, which hold two.)"""
     import dataclasses
 

@@ -138,7 +138,7 @@ CODE_SHARE_LIMIT = 0.25
 calls into the package (QuantEcon's lectures: 13-23 %)."""
 
 CODE_IS_THE_LESSON = {"09_your_own_blade.ipynb": 0.35}
-"""Chapters whose code a reader is meant to copy: chapter 9 shows the package's API on a
+"""Chapters whose code a reader is meant to copy: chapter 11 shows the package's API on a
 blade of the reader's own."""
 
 

@@ -1,5 +1,5 @@
 """The falsifier on the forward-flight certificate files the book ships (``book/certificates/``, made by
-``tools/make_certificates.py``, verified by chapter 11): each file first verifies from nothing,
+``tools/make_certificates.py``, verified by chapter 10): each file first verifies from nothing,
 then survives the attack of :func:`falsifier.falsify_file` (the theorem's three facts on the
 band itself with :data:`EVALUATIONS` evaluations on ``W`` and ten times as many on ``W'``, the
 start set's reported reach, the worst motions from 0.97 of the start set's boundary at four start

@@ -1,4 +1,4 @@
-"""The falsifier on chapter 9's certificates of the SA 330 Puma (the book's own blade from a
+"""The falsifier on chapter 11's certificates of the SA 330 Puma (the book's own blade from a
 parameter file, without pitch-flap coupling): each certificate ``certify`` gives there, built as
 the chapter builds it, survives an independent adversary (:func:`falsifier.falsify_certificate`:
 the theorem's three facts, the start set's reported reach, the worst motions from the start set
@@ -27,7 +27,7 @@ EVALUATIONS = 20_000
 
 
 def puma() -> BladeParameters:
-    """Chapter 9's blade: the Puma file, pitch-flap coupling 0 (its certified case)."""
+    """Chapter 11's blade: the Puma file, pitch-flap coupling 0 (its certified case)."""
     with pytest.warns(Warning):  # the file leaves three fields to the template, and says so
         params = BladeParameters.from_file(EXAMPLE_FILES["sa330-puma"])
     return dataclasses.replace(params, pitch_flap_coupling=0.0)

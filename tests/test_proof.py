@@ -395,7 +395,7 @@ def test_a_forward_flight_case_is_proved():
     x = (u * r[:, None] * q.scales)[ok]
     assert ok.sum() > 1000
     assert np.all(q.dW(psi[ok], x) < 0)
-    # what limits it (chapter 10's account, on 16 model intervals to keep the test short): the
+    # what limits it (chapter 9's account, on 16 model intervals to keep the test short): the
     # models' remainder over the cube of the proved bound is largest on the retreating side, it
     # comes from the innermost strips, whose angle of attack there reaches past the airfoil's
     # negative stall, and without their air loads it is no larger than on the advancing side

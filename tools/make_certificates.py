@@ -9,23 +9,23 @@ blade in the forward-flight model, forward C.G.: ``BladeParameters.flight_case("
 the thorough design (``design="thorough"``, :data:`DESIGN`) and the harmonics of :data:`HARMONICS`,
 is made about the periodic motion
 refined by shooting (``refine=True``: a table that solves the
-equations to round-off, as ``rotorlyap.verify`` checks), in the norm scales of chapter 11's
+equations to round-off, as ``rotorlyap.verify`` checks), in the norm scales of chapter 10's
 case (``rotorlyap.chapters.large_disturbances.CASES``; the default ones where it gives none), and
 saved as ``book/certificates/forward_mu<100 mu>.json``. Its design (the augmented energy
 in forward flight) takes minutes and its start radius depends on the last bits of the
-floating-point environment, so it is made once, here, and committed; chapter 11 and the tests
+floating-point environment, so it is made once, here, and committed; chapter 10 and the tests
 verify each file from nothing (``rotorlyap.verify``) in every run, on any machine.
 
 For each Table I hover, the default ``certify(BladeParameters.table_i(cg), 0.0,
 condition="none", scales=...)`` (the paper's controls; the augmented energy, designed on the
-shell of the band; the norm scales of chapter 11's case,
+shell of the band; the norm scales of chapter 10's case,
 ``rotorlyap.chapters.large_disturbances.SCALE_FACTORS``: the pitch angle's and pitch rate's
 scales larger than the default, so that the start set reaches further along the hinge where it
 reaches least) is saved as
 ``book/certificates/hover_<cg>.json``. Its design takes half a minute to a
 minute, and the backward C.G.'s start radius depends on the last bits of the floating-point
 environment (its design program works at the edge of feasibility); made once here, each file is
-verified by chapter 11 and attacked by the falsifier in every test run instead of being designed
+verified by chapter 10 and attacked by the falsifier in every test run instead of being designed
 again by both.
 
 Run it in the ordinary environment; the progress of each design goes to standard error.
@@ -56,7 +56,7 @@ DESIGN = {"hover": "default", "forward flight": "thorough"}
 #: (``rotorlyap.certify(harmonics=...)``; the package's default is 1). Chosen by measurement: the
 #: thorough design in each file's norm, about the refined motion, with 1 and 2 harmonics, side by
 #: side (2026-12-06, an AMD EPYC of CI's kind; start radius, and the least reach of the start set
-#: along a hinge as a share of chapter 11's simulated region): mu = 0.1: 3.65 and 17.7 % with one,
+#: along a hinge as a share of chapter 10's simulated region): mu = 0.1: 3.65 and 17.7 % with one,
 #: 3.21 and 14.9 % with two; mu = 0.2: 2.84 and 14.0 %, 3.06 and 15.6 %; mu = 0.25: 1.63 and 7.9 %, 2.48
 #: and 11.3 %. Three harmonics at mu = 0.2 met only 2.28 (9.7 %): the design's rounds do not keep
 #: up with 148 coefficients.
@@ -79,7 +79,7 @@ def path_for(case: float | str) -> Path:
 
 def case_scales(case: float | str):
     """The norm scales of a case's certificate (a Table I hover's C.G. or an advance ratio of the
-    trimmed helicopter): chapter 11's for the case (:data:`rotorlyap.chapters.large_disturbances.CASES`;
+    trimmed helicopter): chapter 10's for the case (:data:`rotorlyap.chapters.large_disturbances.CASES`;
     None: the default scales)."""
     from rotorlyap.chapters.large_disturbances import CASES
 

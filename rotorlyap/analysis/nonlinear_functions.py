@@ -26,7 +26,7 @@ counterexamples added round by round):
     supplies the cross and correction terms that cancel the aerodynamic coupling the energy
     lacks; its derivative ``2 y^T C f / a`` still meets the inertial terms. How much the program
     leans on the energy depends on the case and its norm: measured 2026-12-06 on the certificate
-    files the book ships (chapter 11's :func:`rotorlyap.chapters.large_disturbances.anatomy`, the
+    files the book ships (chapter 10's :func:`rotorlyap.chapters.large_disturbances.anatomy`, the
     energy term's share of ``W`` on the start sphere), none for the Table I neutral C.G. in hover
     (a quadratic form designed on the shell certifies alone), 9 % for the backward C.G., 19 % for
     the trimmed helicopter at mu = 0.2, and 81 % and 83 % for the forward C.G. in hover and the
@@ -38,7 +38,7 @@ counterexamples added round by round):
     and quartic terms can cancel the quadratic part of the accelerations to their own order, as
     a truncated power series of Zubov's equation would, without knowing the physics. Its linear
     programs are large (203 coefficients in hover): measured 2026-12-06, the forward C.G.'s
-    design in hover in chapter 11's norm, searched from the start radius 2, had not finished after
+    design in hover in chapter 10's norm, searched from the start radius 2, had not finished after
     19 minutes of one core (the augmented energy's: 10 s), so ``certify``'s default does not try it.
 
 Both are certified the same way as every function of the report: by the engine's sound rule
@@ -70,7 +70,7 @@ FAMILIES = ("energy", "polynomial")
 #: Start radii of the design's search, scaled norm: from ``LAM_START`` up by factors of 2 (and
 #: down, if it fails) to ``LAM_MAX``; the ratios ``A / lam`` tried at each, smallest first (a
 #: badly damped mode needs a level set long in its direction, hence the large ratios). Measured
-#: 2026-12-06 in chapter 11's hover norms: a ratio of 2 tried first met the start radius 3.74
+#: 2026-12-06 in chapter 10's hover norms: a ratio of 2 tried first met the start radius 3.74
 #: instead of 3.72 at the forward C.G. and 2.66 instead of 2.20 at the neutral C.G., but the start
 #: set's least reach along a hinge moved only from 18.4 % to 17.8 % and from 12.6 % to 13.7 % of the
 #: simulated region (the flap rate limits both), so the ratios start at 2.5.
@@ -90,7 +90,7 @@ N_BISECT = 2
 #: certificate files the book ships (``tools/make_certificates.py``). The rounds are what the larger
 #: start radii need: the program stops a design whose rounds have squeezed its margin, and with few
 #: rounds a thorough design of a start radius the program can meet runs out of them. Measured
-#: 2026-12-06 on the trimmed helicopter in chapter 11's norms (without refining the periodic
+#: 2026-12-06 on the trimmed helicopter in chapter 10's norms (without refining the periodic
 #: motion): at mu = 0.1 start radius 3.0 -> 3.6, the least reach of the start set along a hinge 14 %
 #: -> 18 % of the simulated region; at mu = 0.2 2.1 -> 2.5, 9.6 % -> 13 %; 85 s -> 114 s and 83 s
 #: -> 182 s from a warm interpreter.

@@ -29,7 +29,7 @@ enclosures of the blade's equations (:class:`rotorlyap.analysis.enclosure.BladeE
 :mod:`rotorlyap.analysis.nonlinear_functions` that is a quadratic form in hover
 (:func:`designed_quadratic_form`). :func:`enclosure_width` measures what limits both: the balls of
 the Jacobian over a box about the equilibrium against the Jacobian of the float model sampled in
-it (chapter 11: for the Table I blade the balls are some hundreds of times wider than the
+it (chapter 10: for the Table I blade the balls are some hundreds of times wider than the
 variation, in the inertial terms of the pitch equation, at every size of box).
 """
 
@@ -62,7 +62,14 @@ the second cube's search does not close (0.705 of the bound reached in 1.5 milli
 also with models of order 4); with 64 model intervals 0.75 is proved in 131 s, and 0.8 with 64 or
 128 is not.
 One cube of the models (``shells=False``, the prover before) proved 0.60 from its first cube,
-:data:`FLIGHT_ONE_CUBE`."""
+:data:`FLIGHT_ONE_CUBE`. What stops 0.8 (measured 2026-12-06, :func:`remainder_sources`): over the
+cube of 0.8 of the bound the models' largest remainder is 0.089 (scaled) at psi = 309 deg, against
+0.005 on the advancing side; it comes from the two innermost strips (r/R = 0.15 and 0.18), whose
+angle of attack there sweeps -26 to -16 deg and -16 to -9 deg, past and across the airfoil's
+negative stall at -15 deg, whose 3 deg blend a polynomial of order 3 cannot follow; without their
+air loads it would be 0.005. Fitting the table's slopes over each angle range with a cubic instead
+of a line (``_tm_table``) cut those strips' slope deviation three times but the remainder only to
+0.073, and the bound proved stayed 0.72 of the numerical one."""
 
 FLIGHT_ONE_CUBE = 0.75
 """The first cube of :func:`prove_blade` in forward flight over one cube of models
@@ -303,8 +310,9 @@ def prove_blade(fun: QuadraticFunction, A: float, *, n_intervals: int | None = N
     first_cube : float, optional
         The first cube of the models as a fraction of ``A`` (``"taylor"``; default 1 in hover,
         elsewhere :data:`FLIGHT_ONE_CUBE` over one cube: over the whole cube of the numerical bound
-        the models' remainder on the retreating side, from the airfoil's and the compressible
-        sections' kinks, makes the search at mu = 0.1 end far inside); with shells, the first bound
+        the models' remainder on the retreating side, where the innermost strips' angle of attack
+        crosses the airfoil's stall (:func:`remainder_sources`), makes the search at mu = 0.1 end
+        far inside); with shells, the first bound
         tried (default :data:`FLIGHT_FIRST_CUBE`).
     shells : float or bool, optional
         The proof over shells of cubes in the ratio ``shells``
@@ -618,7 +626,7 @@ def remainder_sources(fun: QuadraticFunction, bound: float, *, n_models: int | N
     coordinates), and on the interval where it is largest the same with each strip's air loads
     left out in turn (:func:`rotorlyap.analysis.taylor_enclosure.taylor_evaluate`'s ``strips``),
     then with every strip that carries at least :data:`SOURCE_SHARE` of it left out together. A
-    measurement of what limits the proof (chapter 10): a model without some strips is another
+    measurement of what limits the proof (chapter 9): a model without some strips is another
     blade's, and proves nothing about this one.
 
     Parameters

@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+import inspect
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -88,14 +89,14 @@ class Case:
 #: Each case's norm scales as factors of the default ones
 #: (:data:`rotorlyap.conventions.DEFAULT_SCALES`, in the order beta, zeta, theta, beta', zeta',
 #: theta'), chosen by measurement so that the designed certificate's start set reaches further
-#: along the hinge where it reaches least, against the simulated region (chapter 11's yardstick,
+#: along the hinge where it reaches least, against the simulated region (chapter 10's yardstick,
 #: measured in the default norm whatever the certificate's). The start set is a sublevel set of a
 #: function of the scaled state, so its reach along each hinge follows the scales; but a larger
 #: scale also stretches along its hinge the band on which the design asks W' < 0, and beyond a
 #: point the design program meets a smaller start radius, or none. Measured 2026-12-05 with the default certify (the augmented
 #: energy) against the yardstick of the default norm; the start set's reach in % of the simulated
 #: region along beta, zeta, theta, beta', zeta', theta' (the least marked *; against the yardstick
-#: as chapter 11 prints it, to two digits, so a ratio may differ from the chapter's by its last
+#: as chapter 10 prints it, to two digits, so a ratio may differ from the chapter's by its last
 #: digit or so: the forward C.G.'s chosen norm reaches 19 % there, mu = 0.2's 12 %):
 #:
 #: * forward C.G. hover (simulated 37, 34, >= 40 deg; 1300, 270, >= 5700 deg/s): the default
@@ -134,13 +135,13 @@ class Case:
 #:   reaches further the lag rate limits (34 deg/s of the simulated 520). Each design took 1.5 to
 #:   5.5 minutes.
 #: * trimmed helicopter at mu = 0.2 (simulated 35, 54, >= 40 deg; 1200, 490, >= 5700 deg/s): the
-#:   default norm's least reach 9.4 % (pitch angle, lambda0 2.1, as chapter 11 printed it); pitch,
+#:   default norm's least reach 9.4 % (pitch angle, lambda0 2.1, as chapter 10 printed it); pitch,
 #:   lag rate and pitch rate x1.2: 17, 18, 15, 13*, 14, 15 (lambda0 2.6), the norm here; pitch and
 #:   pitch rate x1.15: 14, 13, 11, 11, 9.6*, 11 (lambda0 2.1); pitch and pitch rate x1.3: 9.5, 8.1,
 #:   8.1, 8.2, 6.7*, 9.4 (lambda0 1.5); pitch x1.5, lag rate and pitch rate x1.3: 4.8, 4.0, 3.2*,
 #:   4.2, 3.4, 3.5 (lambda0 0.74). Each design took 1.5 to 2.5 minutes.
 #: * trimmed helicopter at mu = 0.25 (simulated 32, 50, >= 40 deg; 1200, 480, >= 5700 deg/s): the
-#:   default norm's least reach 4.6 % (pitch angle, lambda0 1.4, as chapter 11 printed it); pitch,
+#:   default norm's least reach 4.6 % (pitch angle, lambda0 1.4, as chapter 10 printed it); pitch,
 #:   lag rate and pitch rate x1.2: 13, 12, 7.6*, 8.7, 9.6, 8.4 (lambda0 1.7), the norm here; pitch
 #:   x1.5, lag rate x1.2, pitch rate x1.3: 11, 9.0, 5.8, 7.1, 6.8, 5.5* (lambda0 1.4). Each design
 #:   took 1 to 4 minutes.
@@ -665,7 +666,8 @@ class LargeDisturbances:
             whole = r.set_reach(r.chosen)
             if np.any(np.isfinite(whole)):
                 f[f"ch11_{k}_set_reach"] = _sig(100 * np.nanmin(whole))
-                f[f"ch11_{k}_ball_reach"] = _sig(100 * np.nanmin(r.reach(r.chosen)))
+                # the inner ball along the same hinge (the text quotes both for that hinge)
+                f[f"ch11_{k}_ball_reach"] = _sig(100 * r.reach(r.chosen)[int(np.nanargmin(whole))])
                 f[f"ch11_{k}_set_weakest"] = _HINGE_WORDS[int(np.nanargmin(whole))]
                 # the yardstick a lower bound along the weakest hinge: the share is an upper estimate
                 f[f"ch11_{k}_set_reach_words"] = ("at most " if r.capped[int(np.nanargmin(whole))] else "") + \
@@ -712,6 +714,8 @@ class LargeDisturbances:
                 f["ch11_width_taylor_radius"] = _sig(pl.width_taylor.radius.max())
                 f["ch11_width_taylor_ratio"] = f"{pl.width_taylor.ratio:.2f}"
                 f["ch11_width_taylor_order"] = str(TAYLOR_ORDER)
+                # the order of the proof's models (prove_designed's default), which the text quotes beside it
+                f["ch11_proof_taylor_order"] = str(inspect.signature(prove_designed).parameters["order"].default)
             f[f"ch11_{k}_q_A"] = _sig(q.bound)
             f[f"ch11_{k}_growth"] = _sig(r.growth_rate)
         if gains:

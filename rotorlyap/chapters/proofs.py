@@ -462,10 +462,10 @@ def figure_flight_proof(row: ProofRow, figsize=(6.6, 5.6)):
              label="polynomial part at the proved bound (estimate)")
     ax2.axhline(0.0, color="k", lw=0.8)
     lo = min(float(np.min(proof.terms["linear"])), float(np.min(proof.terms["nonlinear"])))
-    ax2.set(xlabel=r"azimuth $\psi$ (deg)", ylabel=r"largest $n$ (per rev)", xlim=(0, 360),
+    ax2.set(xlabel=r"azimuth $\psi$ (deg)", ylabel=r"largest $W' / |y|^2$ (per rev)", xlim=(0, 360),
             xticks=np.arange(0, 361, 60), ylim=(min(lo, 0.0) - 0.1, 0.5))
     ax2.legend(fontsize=8.5, loc="upper center", ncol=2)  # above the zero line, clear of the curves
-    ax1.set_title("(a) start region", fontsize=10, loc="left")
+    ax1.set_title("(a) start radius", fontsize=10, loc="left")
     ax2.set_title("(b) the terms of the proof", fontsize=10, loc="left")
     return finish(fig)
 

@@ -476,12 +476,13 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
     shells : float, optional
         The proof over shells of cubes (None, the default: one cube at a time, above). A bound
         ``T`` is proved with models over the cubes ``c_0 = T``, ``c_j = shells^j T`` down to the
-        first below :data:`SHELL_CORE` ``T``: the search of cube ``c_j`` covers the band's points
+        last above :data:`SHELL_CORE` ``T``: the search of cube ``c_j`` covers the band's points
         with ``c_(j+1) <= max_i |y_i| <= c_j`` (:func:`rotorlyap.methods.band.largest_bound` with
         ``sigma_floor`` and ``complete``), the smallest cube all of its points, so that every
         point of the band lies in the search of a cube whose models are taken over a box little
-        larger than the point's own. The models' remainder grows with the cube (the airfoil's
-        kinks on the retreating side, first order in the box), so that the points near the
+        larger than the point's own. The models' remainder grows with the cube (for the trimmed
+        helicopter on the retreating side, where the angle of attack of the innermost strips
+        crosses the airfoil's stall: :func:`rotorlyap.analysis.proof.remainder_sources`), so that the points near the
         origin, which one cube of ``T`` leaves to its largest remainder, are shown with small
         ones. Each cube's search must close (``max_boxes`` boxes at most); where one does not, the
         next bound of :data:`rotorlyap.methods.band.STEPS` times ``first_cube A`` is tried, up to
