@@ -250,7 +250,8 @@ def _deg(value: float) -> str:
 def _source_facts(src: RemainderSources, airfoil) -> dict:
     """``ch10_src_{rem,psi,adv,where,angles,without}`` (2 significant digits, whole deg, words) and
     ``ch10_stall_neg``, ``ch10_stall_blend`` (the airfoil's negative stall angle and stall blend,
-    whole deg): the text's account of where the forward-flight proof's remainder comes from."""
+    whole deg with the sign, as text): the text's account of where the forward-flight proof's remainder
+    comes from."""
     k = src.worst
     adv = src.psi < np.pi
     strips = src.sources
@@ -267,8 +268,7 @@ def _source_facts(src: RemainderSources, airfoil) -> dict:
             "ch10_src_adv": float(f"{src.remainder[adv].max():.2g}") if adv.any() else float("nan"),
             "ch10_src_where": where, "ch10_src_angles": angles,
             "ch10_src_without": float(f"{src.without_sources:.2g}"),
-            "ch10_stall_neg": round(float(np.degrees(airfoil.alpha_stall_negative))),
-            "ch10_stall_blend": round(float(np.degrees(airfoil.stall_blend)))}
+            "ch10_stall_neg": _deg(airfoil.alpha_stall_negative), "ch10_stall_blend": _deg(airfoil.stall_blend)}
 
 
 def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
