@@ -65,6 +65,19 @@ def test_a_case_holds_the_certificate_certify_gives_and_its_yardstick(data):
     yi, yj = np.meshgrid(axis, axis, indexing="ij")
     rho = np.hypot(yi, yj)
     assert np.all(inside[rho < 0.999 * cand.start_region]) and not np.any(inside[rho >= cand.bound])
+    # the strips' angles of attack at the bound along each hinge (hover): flapping up (a positive
+    # flap rate) lowers every strip's angle of attack below the equilibrium's, flapping down raises
+    # it, and the stalled strips counted are those past the airfoil's stall angles
+    ba = r.bound_angles
+    assert ba is not None and ba.A == pytest.approx(cand.bound, rel=1e-12)
+    blade = direct.lyapunov.blade
+    rest = blade.angle_of_attack(0.0, direct.lyapunov.steady.state)
+    assert np.all(ba.angles[3, 0] < rest) and np.all(ba.angles[3, 1] > rest)
+    for i in range(6):
+        for k, sign in ((0, 1), (1, -1)):
+            a = ba.angles[i, k]
+            assert ba.stalled(i, sign) == np.sum((a > ba.alpha_stall) | (a < ba.alpha_stall_negative))
+    assert "strips' angles of attack" in data.summary()
 
 
 @pytest.mark.slow

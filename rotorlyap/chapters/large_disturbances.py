@@ -8,6 +8,8 @@
   :func:`rotorlyap.analysis.region.stable_region`; every number recomputed;
 * :func:`anatomy`: a designed function taken apart (the energy's share, where ``W'`` turns
   positive beyond the bound);
+* :func:`bound_angles`: in hover, the strips' angles of attack at the certified bound along each
+  hinge alone (how far the band reaches into the airfoil's stall);
 * :func:`figure_reach`: the certified start set and its inner ball along each hinge angle and
   rate as a fraction of the simulated region, per function and case;
 * :func:`figure_slices`: the simulated flap-lag and flap-pitch slices with the default
@@ -34,9 +36,9 @@ from ..methods.sampling import unit_sphere_points
 from ..model.parameters import BladeParameters
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
-__all__ = ["ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "CASES", "Case", "CaseResult", "LargeDisturbances",
-           "ProofLimit", "SET_SLICE_POINTS", "TAYLOR_ORDER", "WIDTH_BOUNDS", "anatomy", "figure_reach", "figure_slices",
-           "large_disturbances", "proof_limit", "set_slice"]
+__all__ = ["ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "BoundAngles", "CASES", "Case", "CaseResult",
+           "LargeDisturbances", "ProofLimit", "SET_SLICE_POINTS", "TAYLOR_ORDER", "WIDTH_BOUNDS", "anatomy",
+           "bound_angles", "figure_reach", "figure_slices", "large_disturbances", "proof_limit", "set_slice"]
 
 
 @dataclass(frozen=True)
@@ -259,6 +261,9 @@ class CaseResult:
         at the azimuth 0 (:func:`set_slice`): name -> ``(axis, inside)``, the grid of both
         coordinates (scaled norm, ``(k,)``) and where a start (rates zero) lies in the set
         (``(k, k)`` bool, rows the first coordinate); empty where nothing is certified.
+    bound_angles : BoundAngles or None
+        In hover, the strips' angles of attack with the default certificate's bound along each
+        hinge alone (:func:`bound_angles`); None in forward flight or where nothing is certified.
     """
 
     case: Case
@@ -272,6 +277,7 @@ class CaseResult:
     proof: ProofLimit | None = None
     set_slices: dict = field(default_factory=dict)
     verification: str = ""
+    bound_angles: "BoundAngles | None" = None
 
     def candidate(self, function: str) -> Candidate | None:
         """The candidate of ``function`` (None if not tried)."""
@@ -475,6 +481,46 @@ def set_slice(fun, level: float, A: float, scales, i: int, j: int, *, psi: float
     return axis, inside.reshape(n, n)
 
 
+@dataclass(frozen=True)
+class BoundAngles:
+    """The strips' angles of attack at the certified bound along each hinge alone (hover).
+
+    Attributes
+    ----------
+    A : float
+        The bound, scaled norm.
+    angles : numpy.ndarray, shape (6, 2, n_strips)
+        Per hinge (beta, zeta, theta, beta', zeta', theta'), for the disturbance ``+A a_i`` and
+        ``-A a_i`` of that hinge alone about the steady motion: each strip's angle of attack, rad.
+    alpha_stall, alpha_stall_negative : float
+        The airfoil's stall angles, rad.
+    """
+
+    A: float
+    angles: np.ndarray
+    alpha_stall: float
+    alpha_stall_negative: float
+
+    def stalled(self, hinge: int, sign: int) -> int:
+        """Strips past a stall angle (above ``alpha_stall`` or below ``alpha_stall_negative``) with
+        the disturbance ``sign * A a_hinge``."""
+        a = self.angles[hinge, 0 if sign > 0 else 1]
+        return int(np.sum((a > self.alpha_stall) | (a < self.alpha_stall_negative)))
+
+
+def bound_angles(fun, A: float, scales) -> BoundAngles:
+    """The strips' angles of attack (:meth:`rotorlyap.model.equations.BladeEquations.angle_of_attack`)
+    with the disturbance ``+-A a_i`` of each hinge alone about a constant steady motion (hover): how
+    far into the airfoil's stall the band of a certificate of bound ``A`` reaches along each hinge."""
+    a = np.asarray(scales, dtype=float)
+    z = np.asarray(fun.steady.state, dtype=float)
+    states = np.array([z + s * A * a[i] * np.eye(6)[i] for i in range(6) for s in (1.0, -1.0)])
+    angles = np.asarray(fun.blade.angle_of_attack(np.zeros(len(states)), states), dtype=float)
+    airfoil = fun.blade.params.airfoil
+    return BoundAngles(A=float(A), angles=angles.reshape(6, 2, -1), alpha_stall=float(airfoil.alpha_stall),
+                       alpha_stall_negative=float(airfoil.alpha_stall_negative))
+
+
 def _compute(task: tuple[str, Case, Path | None]):
     """One task of a worker process: ``("certificate", case, folder)`` or ``("region", case, folder)``."""
     kind, case, folder = task
@@ -506,8 +552,9 @@ def _compute(task: tuple[str, Case, Path | None]):
     proof = (proof_limit(fun) if designed and fun.autonomous and _is_quadratic_form(fun) else None)
     slices = ({name: set_slice(fun, level, bound, cert.scales, i, j) for name, (i, j) in SLICES.items()}
               if certified else {})
+    angles = bound_angles(fun, bound, cert.scales) if certified and case.mu == 0.0 else None
     return (cert.trim.params.rotor_speed, np.asarray(cert.scales, dtype=float), cert.growth_rate, chosen,
-            candidates, parts, proof, slices, verification)
+            candidates, parts, proof, slices, verification, angles)
 
 
 def _from_file(path: Path, case: Case):
@@ -550,6 +597,29 @@ def _sign_words(radii, max_dw) -> str:
         return f"is positive already on the sphere of {first:g} times the bound"
     return (f"stays negative on every sampled sphere up to {max(below):g} times the bound and is positive "
             f"somewhere on the sphere of {first:g} times it")
+
+
+def _deg_words(value: float) -> str:
+    """An angle in whole degrees with a true minus sign."""
+    return f"{round(float(np.degrees(value))):d}°".replace("-", "−")
+
+
+def _range_words(angles: np.ndarray) -> str:
+    return f"{_deg_words(np.min(angles))} to {_deg_words(np.max(angles))}"
+
+
+def _bound_angle_words(r) -> str:
+    """One line: the strips' angles of attack at the bound along the hinge where the start set
+    reaches least, both signs, and how many strips are past a stall angle."""
+    ba = r.bound_angles
+    i = int(np.nanargmin(r.set_reach(r.chosen)))
+    size = _sig(r.per_component(ba.A)[i])
+    unit = "deg/s" if i >= 3 else "deg"
+    n = ba.angles.shape[-1]
+    return (f"at the bound along the {_HINGE_WORDS[i]} (+-{size:g} {unit}) the strips' angles of attack: "
+            f"{_range_words(ba.angles[i, 0])} (+), {ba.stalled(i, 1)} of {n} past a stall angle; "
+            f"{_range_words(ba.angles[i, 1])} (-), {ba.stalled(i, -1)} of {n} (stall at "
+            f"{_deg_words(ba.alpha_stall_negative)} and {_deg_words(ba.alpha_stall)})")
 
 
 def _sig(v: float, digits: int = 2) -> float:
@@ -624,6 +694,8 @@ class LargeDisturbances:
                     out.append(f"    at {k:g} A: max W' {_sig(m):g} (energy's part {_sig(e):g}), W' >= 0 on "
                                f"{_sig(100 * fr):g} % of the sphere, along "
                                + " and ".join(f"{STATE_NAMES[j]} {d[j]:+.1f}" for j in top))
+            if r.bound_angles is not None and np.any(np.isfinite(r.set_reach(r.chosen))):
+                out.append("    " + _bound_angle_words(r))
             if r.proof is not None:
                 pl = r.proof
                 out.append(f"    proved (Taylor models, branch and bound on the band): A = {_sig(pl.A):g}, lambda0 = {_sig(pl.lambda0):g}; "
@@ -694,6 +766,16 @@ class LargeDisturbances:
                 f[f"ch11_{k}_e_A"] = _sig(e.bound)
                 f[f"ch11_{k}_e_met"] = _sig(best)
                 f[f"ch11_{k}_e_fail"] = _sig(fail)
+            if r.bound_angles is not None and np.any(np.isfinite(whole)):
+                ba, i = r.bound_angles, int(np.nanargmin(whole))
+                f[f"ch11_{k}_bound_along"] = f"{_sig(r.per_component(ba.A)[i]):g} {'deg/s' if i >= 3 else 'deg'}"
+                f[f"ch11_{k}_bound_up"] = _range_words(ba.angles[i, 0])
+                f[f"ch11_{k}_bound_down"] = _range_words(ba.angles[i, 1])
+                f[f"ch11_{k}_stalled_up"] = ba.stalled(i, 1)
+                f[f"ch11_{k}_stalled_down"] = ba.stalled(i, -1)
+                f["ch11_n_strips"] = int(ba.angles.shape[-1])
+                f["ch11_stall_pos"] = _deg_words(ba.alpha_stall)
+                f["ch11_stall_neg"] = _deg_words(ba.alpha_stall_negative)
             if r.proof is not None:
                 pl = r.proof
                 f[f"ch11_{k}_proof_A"] = _sig(pl.A)
@@ -777,9 +859,9 @@ def large_disturbances(cases=CASES, *, workers: int | None = None,
     out = {tasks[i][:2]: v for i, v in zip(order, done)}
     results = []
     for c in cases:
-        omega, scales, growth, chosen, candidates, parts, proof, slices, checked = out[("certificate", c)]
+        omega, scales, growth, chosen, candidates, parts, proof, slices, checked, angles = out[("certificate", c)]
         results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts, proof,
-                                  slices, checked))
+                                  slices, checked, angles))
     return LargeDisturbances(tuple(results))
 
 
