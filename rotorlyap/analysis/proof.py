@@ -363,8 +363,8 @@ def designed_quadratic_form(fun) -> np.ndarray:
 
     A :class:`~rotorlyap.analysis.nonlinear_functions.DesignedFunction` is a combination of basis
     functions; where every term but the constant quadratic monomials has the weight exactly 0 (the
-    augmented energy of the Table I forward C.G. in hover: the program gives the energy no
-    weight), ``W = y^T S y`` with ``y = x / a`` exactly, ``S_ii`` the weight of ``y_i^2`` and
+    augmented energy of the Table I neutral C.G. in hover, the file the book ships: the program
+    gives the energy no weight), ``W = y^T S y`` with ``y = x / a`` exactly, ``S_ii`` the weight of ``y_i^2`` and
     ``S_ij = S_ji`` half the weight of ``y_i y_j``.
 
     Returns
