@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-__all__ = ["ROUNDOFF_FLOOR", "Rounded", "count", "decade_above", "format_small", "format_small_array",
+__all__ = ["ROUNDOFF_FLOOR", "Rounded", "count", "decade_above", "degrees", "format_small", "format_small_array",
            "percent"]
 
 ROUNDOFF_FLOOR = 1e-10
@@ -181,6 +181,17 @@ def count(n: int, noun: str, plural: str | None = None) -> str:
         raise ValueError(f"count needs a non-negative integer, got {n!r}")
     word = noun if int(n) == 1 else (plural if plural is not None else noun + "s")
     return f"{int(n)} {word}"
+
+
+def degrees(angle: float) -> str:
+    """An angle given in rad as text in whole degrees, with a true minus sign (the book's typography).
+
+    Examples
+    --------
+    >>> degrees(-0.2618), degrees(0.0524)
+    ('−15°', '3°')
+    """
+    return f"{round(float(np.degrees(angle))):d}°".replace("-", "\u2212")
 
 
 class Rounded(float):

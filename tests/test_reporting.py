@@ -96,3 +96,10 @@ def test_a_count_agrees_with_its_noun():
     for bad in (-1, 1.5, True):
         with pytest.raises(ValueError, match="non-negative integer"):
             count(bad, "azimuth")
+
+
+def test_an_angle_prints_in_whole_degrees_with_a_true_minus_sign():
+    from rotorlyap.reporting import degrees
+
+    assert degrees(np.radians(-15.2)) == "\u221215°" and degrees(np.radians(3.0)) == "3°"
+    assert degrees(np.radians(-0.4)) == "0°"  # no minus on a zero

@@ -34,6 +34,7 @@ from ..conventions import DEFAULT_SCALES, HINGES, STATE_NAMES
 from ..methods.region import DEFAULT_BOUND, DEFAULT_DECAY, DEFAULT_STEPS_PER_PERIOD, MAX_PERIODS, MIN_PERIODS
 from ..methods.sampling import unit_sphere_points
 from ..model.parameters import BladeParameters
+from ..reporting import degrees
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
 __all__ = ["ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "BoundAngles", "CASES", "Case", "CaseResult",
@@ -599,13 +600,8 @@ def _sign_words(radii, max_dw) -> str:
             f"somewhere on the sphere of {first:g} times it")
 
 
-def _deg_words(value: float) -> str:
-    """An angle in whole degrees with a true minus sign."""
-    return f"{round(float(np.degrees(value))):d}°".replace("-", "−")
-
-
 def _range_words(angles: np.ndarray) -> str:
-    return f"{_deg_words(np.min(angles))} to {_deg_words(np.max(angles))}"
+    return f"{degrees(np.min(angles))} to {degrees(np.max(angles))}"
 
 
 def _bound_angle_words(r) -> str:
@@ -619,7 +615,7 @@ def _bound_angle_words(r) -> str:
     return (f"at the bound along the {_HINGE_WORDS[i]} (+-{size:g} {unit}) the strips' angles of attack: "
             f"{_range_words(ba.angles[i, 0])} (+), {ba.stalled(i, 1)} of {n} past a stall angle; "
             f"{_range_words(ba.angles[i, 1])} (-), {ba.stalled(i, -1)} of {n} (stall at "
-            f"{_deg_words(ba.alpha_stall_negative)} and {_deg_words(ba.alpha_stall)})")
+            f"{degrees(ba.alpha_stall_negative)} and {degrees(ba.alpha_stall)})")
 
 
 def _sig(v: float, digits: int = 2) -> float:
@@ -774,8 +770,8 @@ class LargeDisturbances:
                 f[f"ch11_{k}_stalled_up"] = ba.stalled(i, 1)
                 f[f"ch11_{k}_stalled_down"] = ba.stalled(i, -1)
                 f["ch11_n_strips"] = int(ba.angles.shape[-1])
-                f["ch11_stall_pos"] = _deg_words(ba.alpha_stall)
-                f["ch11_stall_neg"] = _deg_words(ba.alpha_stall_negative)
+                f["ch11_stall_pos"] = degrees(ba.alpha_stall)
+                f["ch11_stall_neg"] = degrees(ba.alpha_stall_negative)
             if r.proof is not None:
                 pl = r.proof
                 f[f"ch11_{k}_proof_A"] = _sig(pl.A)

@@ -28,7 +28,7 @@ from ..methods.proof import SHELL_CORE, Proof, nonlinear_bounds
 from ..model.blade import Blade
 from ..model.forward_trim import forward_flight_trim
 from ..model.parameters import BladeParameters
-from ..reporting import Rounded, decade_above
+from ..reporting import Rounded, decade_above, degrees
 
 #: Below this, a residual term is round-off (the hover equilibrium's): printed as "< 1e-08".
 ROUNDOFF_TERM = 1e-8
@@ -242,11 +242,6 @@ class ProofTable:
 _COUNT_WORDS = {1: "the", 2: "the two", 3: "the three", 4: "the four"}
 
 
-def _deg(value: float) -> str:
-    """An angle in whole degrees with a true minus sign."""
-    return f"{round(float(np.degrees(value))):d}°".replace("-", "−")
-
-
 def _source_facts(src: RemainderSources, airfoil) -> dict:
     """``ch10_src_{rem,psi,adv,where,angles,without}`` (2 significant digits, whole deg, words) and
     ``ch10_stall_neg``, ``ch10_stall_blend`` (the airfoil's negative stall angle and stall blend,
@@ -262,13 +257,13 @@ def _source_facts(src: RemainderSources, airfoil) -> dict:
         noun = "strip" if len(strips) == 1 else "strips"
         radii = " and ".join(f"{src.station[i]:.2f}" for i in strips)
         where = f"{count} {'innermost ' if inner else ''}{noun} (at {radii} of the rotor radius)"
-    angles = " and ".join(f"from {_deg(src.angles[i, 0])} to {_deg(src.angles[i, 1])}" for i in strips)
+    angles = " and ".join(f"from {degrees(src.angles[i, 0])} to {degrees(src.angles[i, 1])}" for i in strips)
     return {"ch10_src_rem": float(f"{src.remainder[k]:.2g}"),
             "ch10_src_psi": round(float(np.degrees(src.psi[k]))),
             "ch10_src_adv": float(f"{src.remainder[adv].max():.2g}") if adv.any() else float("nan"),
             "ch10_src_where": where, "ch10_src_angles": angles,
             "ch10_src_without": float(f"{src.without_sources:.2g}"),
-            "ch10_stall_neg": _deg(airfoil.alpha_stall_negative), "ch10_stall_blend": _deg(airfoil.stall_blend)}
+            "ch10_stall_neg": degrees(airfoil.alpha_stall_negative), "ch10_stall_blend": degrees(airfoil.stall_blend)}
 
 
 def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
