@@ -462,6 +462,11 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
     if c.shape[-1:] != (6,) or r.shape[-1:] != (6,):
         raise ValueError(f"centre and radius must have a last axis of 6, got {c.shape} and {r.shape}")
     c, r = np.broadcast_arrays(c, r)
+    if strips is not None:
+        strips = np.asarray(strips, dtype=bool).reshape(-1)
+        if strips.size != enclosure.st.shape[1]:
+            raise ValueError(f"strips must hold one flag per aerodynamic station ({enclosure.st.shape[1]}), "
+                             f"got {strips.size}")
     sc = enclosure.sc
     with iv.arithmetic("balls"):
         if n_intervals is None:
@@ -491,11 +496,6 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         F = [T[6 + i] - z[3 + i] * float(sc[(_C0, _C1, _C2)[i]]) for i in range(3)]
         blocked = np.zeros(shape, dtype=bool)
         angles = None
-        if strips is not None:
-            strips = np.asarray(strips, dtype=bool).reshape(-1)
-            if strips.size != enclosure.st.shape[1]:
-                raise ValueError(f"strips must hold one flag per aerodynamic station ({enclosure.st.shape[1]}), "
-                                 f"got {strips.size}")
         if sc[_ACTIVE] != 0.0:
             air, blocked, angles = _air_moments(enclosure, z, T, psi, strips)
             F = [f + a for f, a in zip(F, air)]
