@@ -69,7 +69,16 @@ angle of attack there sweeps -26 to -16 deg and -16 to -9 deg, past and across t
 negative stall at -15 deg, whose 3 deg blend a polynomial of order 3 cannot follow; without their
 air loads it would be 0.005. Fitting the table's slopes over each angle range with a cubic instead
 of a line (``_tm_table``) cut those strips' slope deviation three times but the remainder only to
-0.073, and the bound proved stayed 0.72 of the numerical one."""
+0.073, and the bound proved stayed 0.72 of the numerical one. What a proof to 0.8 would take
+(measured 2026-12-06 with the models' remainders scaled by hand, a feasibility measurement and
+not a proof): with every remainder zero, 0.8 is proved with 4 million boxes per shell (26 s) but
+not with the default 1.2 million (0.76); with the remainders above 0.01 (the retreating side's)
+at a tenth, 0.8 with 4 million boxes (38 s); at a quarter, not (0.76). So models whose retreating
+remainder is near the advancing side's, ten times below today's, and a search three times as
+long; with today's models a longer search alone proves no more (4 million boxes per shell: 0.72,
+0.76 not). Models over the two halves of the cube along the flap rate, the disturbance that moves
+those strips' angle of attack most, lower it only to 0.062 and 0.034 (the azimuth within a
+model interval alone sweeps the innermost strip's angle by 3 deg)."""
 
 FLIGHT_ONE_CUBE = 0.75
 """The first cube of :func:`prove_blade` in forward flight over one cube of models
