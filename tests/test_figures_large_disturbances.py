@@ -143,6 +143,33 @@ def test_anatomy_measures_the_energy_share_and_the_sign_of_w_dot_beyond_the_boun
     assert an.energy_dw[k] > 0  # |y|^2 grows there too (the "energy" term is the whole |y|^2)
 
 
+def test_anatomy_finds_a_positive_cap_of_w_dot_that_its_sample_misses():
+    """W' = |y|^2 (1.5 (u . u*)^40 - 1), u = y / |y|: positive only within about 0.14 rad of the
+    direction u* (where it is |y|^2 / 2), a cap no sampled direction hits, but W' grows towards it
+    from the best samples, so the search from them finds it: the largest W' on each sphere is
+    r^2 / 2 along u*, although no sampled state has W' >= 0."""
+    from types import SimpleNamespace
+
+    from rotorlyap.methods.scenario import Basis, BasisFunction
+
+    a = np.ones(6)
+    star = np.array([0.3, -0.5, 0.2, 0.6, -0.1, 0.5])
+    star /= np.linalg.norm(star)
+
+    def rate(psi, x):
+        r2 = np.sum(x * x, axis=1)
+        g = np.clip(x @ star / np.sqrt(r2), 0.0, None) ** 40
+        return r2 * (1.5 * g - 1.0)
+
+    basis = Basis(("energy",), lambda psi, x: np.sum(x * x, axis=1)[:, None], lambda psi, x: rate(psi, x)[:, None])
+    fun = SimpleNamespace(function=BasisFunction(basis, np.array([1.0]), None), scales=a, autonomous=True)
+    an = chapter.anatomy(fun, A=1.0, lam0=0.5, samples=1024)
+    assert all(fr == 0.0 for fr in an.positive_fraction)
+    for k, m, d in zip(an.radii, an.max_dw, an.direction):
+        assert m == pytest.approx(0.5 * k ** 2, rel=1e-6)
+        assert np.dot(d, star) == pytest.approx(1.0, abs=1e-6)
+
+
 @pytest.mark.slow
 def test_a_case_with_a_certificate_file_verifies_it_and_keeps_it_beside_the_quadratic_function(tmp_path):
     """A case that names a certificate file reads and verifies it (its verdict printed in the
