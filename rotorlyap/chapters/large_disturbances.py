@@ -416,22 +416,28 @@ def anatomy(fun, A: float, lam0: float, *, samples: int = ANATOMY_SAMPLES, seed:
     return Anatomy(share, ANATOMY_RADII, tuple(max_dw), tuple(energy_dw), tuple(positive), tuple(direction))
 
 
-def _sphere_search(basis, c, psi: float, u0, radius: float, a):
+def _sphere_search(basis, c, psi: float, u0, radius: float, a, step: float = 1e-6):
     """A local search for the largest ``W' = rates @ c`` on the sphere ``||x|| = radius`` (scaled
-    norm) from the unit direction ``u0``, the azimuth held: ``(W', its unit direction)``."""
+    norm) from the unit direction ``u0``, the azimuth held: ``(W', its unit direction)``. The value
+    and its central-difference gradient in the direction's coordinates (``step``) come from one
+    vectorised call per iterate."""
     from scipy.optimize import minimize
 
-    p = np.array([psi])
+    n = len(u0)
+    shifts = np.vstack([np.zeros(n), step * np.eye(n), -step * np.eye(n)])
+    p = np.full(len(shifts), psi)
 
     def neg(z):
-        v = z / np.linalg.norm(z)
-        return -float(basis.rates(p, radius * v[None, :] * a)[0] @ c)
+        zs = z[None, :] + shifts
+        v = zs / np.linalg.norm(zs, axis=1)[:, None]
+        w = basis.rates(p, radius * v * a) @ c
+        return -float(w[0]), -(w[1:n + 1] - w[n + 1:]) / (2 * step)
 
     # converged to the local maximum (its value then does not depend on the path's last bits)
-    res = minimize(neg, np.asarray(u0, dtype=float), method="L-BFGS-B",
-                   options={"maxiter": 200, "gtol": 1e-12, "ftol": 1e-15})
+    res = minimize(neg, np.asarray(u0, dtype=float), jac=True, method="L-BFGS-B",
+                   options={"maxiter": 200, "gtol": 1e-10, "ftol": 1e-15})
     v = res.x / np.linalg.norm(res.x)
-    return -neg(res.x), v
+    return -neg(res.x)[0], v
 
 
 #: Half-widths of the boxes about the equilibrium (scaled norm) on which :func:`proof_limit` measures
