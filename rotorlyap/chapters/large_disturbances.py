@@ -728,9 +728,9 @@ class LargeDisturbances:
                            f"part's {_sig(100 - share):g} %; either may be negative)")
                 for k, m, e, fr, d in zip(an.radii, an.max_dw, an.energy_dw, an.positive_fraction, an.direction):
                     top = np.argsort(-np.abs(d))[:2]
-                    out.append(f"    at {k:g} A: max W' {_sig(m):g} (energy's part {_sig(e):g}), W' >= 0 on "
-                               f"{_sig(100 * fr):g} % of the sphere, along "
-                               + " and ".join(f"{STATE_NAMES[j]} {d[j]:+.1f}" for j in top))
+                    along = " and ".join(f"{STATE_NAMES[j]} {d[j]:+.1f}" for j in top)
+                    out.append(f"    at {k:g} A: max W' {_sig(m):g} along {along} (energy's part {_sig(e):g}); "
+                               f"W' >= 0 at {_sig(100 * fr):g} % of the sampled directions")
             if r.bound_angles is not None and np.any(np.isfinite(r.set_reach(r.chosen))):
                 out.append("    " + _bound_angle_words(r))
             if r.proof is not None:
