@@ -37,9 +37,9 @@ from ..model.parameters import BladeParameters
 from ..reporting import degrees
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
-__all__ = ["ANATOMY_POLISH", "ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "BoundAngles", "CASES", "Case", "CaseResult",
-           "LargeDisturbances", "ProofLimit", "SET_SLICE_POINTS", "TAYLOR_ORDER", "WIDTH_BOUNDS", "anatomy",
-           "bound_angles", "figure_reach", "figure_slices", "large_disturbances", "proof_limit", "set_slice"]
+__all__ = ["ANATOMY_POLISH", "ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "BoundAngles", "CASES", "Case",
+           "CaseResult", "LargeDisturbances", "ProofLimit", "SET_SLICE_POINTS", "TAYLOR_ORDER", "WIDTH_BOUNDS",
+           "anatomy", "bound_angles", "figure_reach", "figure_slices", "large_disturbances", "proof_limit", "set_slice"]
 
 
 @dataclass(frozen=True)
