@@ -21,12 +21,13 @@ blade is unstable only the quadratic function is tried: it says why nothing can 
 Every such result rests on sampled searches of ``W'``: it is a numerical certificate, and its
 message says so. With ``verify=True`` the function of the certificate returned is also *proved*
 from enclosures (:func:`prove_certificate`: :func:`rotorlyap.analysis.proof.prove_blade` for the
-quadratic function, :func:`rotorlyap.analysis.proof.prove_designed` for a designed function that
-is a quadratic form in hover; Taylor models of the equations in float balls and a branch and
-bound over the band, issue 41): the result carries a :class:`~rotorlyap.methods.proof.Proof` with
-the bound and start regions that follow from the theorem for the model as enclosed, at most the
-numerical ones, and a :class:`ProvedPart` saying what is proved as fractions of the numerical
-certificate, or why nothing is (a function no prover encloses). In forward flight a
+quadratic function, Taylor models of the equations in float balls and a branch and bound over the
+band; :func:`rotorlyap.analysis.designed_proof.prove_designed_level` for a designed hover
+function, its level set through the ball of ``proof_fraction`` of the numerical start radius
+shown invariant, issue 41): the result carries the proof, with the bound and start radius that
+follow from the theorem for the model as enclosed, and a :class:`ProvedPart` saying what is
+proved as fractions of the numerical certificate, or why nothing is (a function no prover
+encloses). In forward flight a
 proof needs a steady motion with a residual near round-off, so ``verify=True`` first refines the
 periodic motion by shooting (:func:`rotorlyap.model.steady.refine_motion`) and computes both
 certificates about it.
@@ -249,8 +250,15 @@ class Certificate:
         return "\n".join(lines)
 
 
+#: The start radius :func:`prove_certificate` asks of a designed function's level-set proof, as a
+#: fraction of the numerical certificate's (the proof's cost grows as the fifth power of it:
+#: measured 2026-12-06 for the Table I forward C.G. in hover, ... at 0.5).
+DESIGNED_PROOF_FRACTION = 0.5
+
+
 def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propulsive", function: str = "auto",
             A: float | None = None, scales=None, n_psi: int = 36, Q=None, verify: bool = False,
+            proof_fraction: float = DESIGNED_PROOF_FRACTION,
             refine: bool | None = None, design: str = "default", harmonics: int | None = None,
             **engine_options) -> Certificate:
     """Certify technical stability of the blade's trimmed steady motion at ``mu``.
@@ -280,15 +288,20 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     Q : array_like, optional
         Weight of the quadratic function (default: the identity in scaled coordinates).
     verify : bool
-        Also prove the certificate returned, its own function, up to its numerical bound
-        (:func:`prove_certificate`: the quadratic function by
-        :func:`rotorlyap.analysis.proof.prove_blade`, a designed function that is a quadratic form
-        in hover by :func:`rotorlyap.analysis.proof.prove_designed`, both Taylor models and a
-        branch and bound over the band; seconds in hover, tens of seconds in forward flight); the
-        result's ``proved_part`` says what is proved, or why nothing is (a designed function with
-        weight on the energy, or in forward flight: no prover encloses it). In forward flight the
+        Also prove the certificate returned, its own function (:func:`prove_certificate`: the
+        quadratic function up to its numerical bound by
+        :func:`rotorlyap.analysis.proof.prove_blade`, Taylor models and a branch and bound over the
+        band, seconds in hover and tens of seconds in forward flight; a designed hover function by
+        :func:`rotorlyap.analysis.designed_proof.prove_designed_level`, its level set through the
+        ball of ``proof_fraction`` times the numerical start radius shown invariant, up to minutes
+        at the default); the result's ``proved_part`` says what is proved, or why nothing is (a
+        designed function in forward flight: no prover encloses it). In forward flight the
         periodic motion is first refined by shooting (module docstring). The candidates are those
         of ``verify=False``.
+    proof_fraction : float
+        With ``verify``, the start radius asked of a designed function's proof, as a fraction of
+        the numerical one (default :data:`DESIGNED_PROOF_FRACTION`; the proof's work grows about
+        as the fifth power of it).
     refine : bool, optional
         In forward flight, refine the trim's periodic motion by shooting
         (:func:`rotorlyap.model.steady.refine_motion`, a residual near round-off) and certify about
@@ -402,7 +415,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
     if verify:
         report(f"proof of the {family} function (Taylor models, branch and bound)")
         proof, part = prove_certificate(fun, family, cand.bound, cand.start_region, cand.certified,
-                                        A_requested=A_quadratic)
+                                        A_requested=A_quadratic, designed_fraction=proof_fraction)
     return Certificate(certified=cand.certified, mu=mu, condition=condition, trim=trim, growth_rate=growth,
                        bound=cand.bound, start_region=cand.start_region, scales=a, result=res,
                        message=cand.message, proof=proof, function=family,
@@ -412,18 +425,20 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
 
 #: The provers :func:`prove_certificate` names.
 _METHODS = {"quadratic": "Taylor models and branch and bound (prove_blade)",
-            "designed": "Taylor models and branch and bound (prove_designed)"}
-
+            "designed": "Taylor models and branch and bound on a level set (prove_designed_level)"}
 
 def prove_certificate(fun, family: str, bound: float, start_region: float, certified: bool, *,
-                      A_requested: float = DEFAULT_A) -> tuple[Proof | None, ProvedPart]:
-    """Prove a certificate's own function up to its numerical bound: what ``certify(verify=True)`` does.
+                      A_requested: float = DEFAULT_A,
+                      designed_fraction: float = DESIGNED_PROOF_FRACTION) -> tuple[Proof | None, ProvedPart]:
+    """Prove a certificate's own function: what ``certify(verify=True)`` does.
 
-    The quadratic function by :func:`rotorlyap.analysis.proof.prove_blade`; a designed function
-    (``"energy"``, ``"polynomial"``) that is a quadratic form of the state in hover by
-    :func:`rotorlyap.analysis.proof.prove_designed`; any other designed function (a weight on the
-    energy, on a cubic or quartic monomial, or coefficients that depend on the azimuth in forward
-    flight) is not taken by a prover, and the result says so.
+    The quadratic function by :func:`rotorlyap.analysis.proof.prove_blade`, up to its numerical
+    bound; a designed function (``"energy"``, ``"polynomial"``) of the energy and quadratic
+    monomials in hover by :func:`rotorlyap.analysis.designed_proof.prove_designed_level`: its level
+    set through the ball of ``designed_fraction`` times the numerical start radius shown
+    invariant (``W' < 0`` on it), which proves that start radius and a bound around that level
+    set. A designed function with weights on cubic or quartic monomials, or with coefficients
+    that depend on the azimuth (forward flight), is not taken by a prover, and the result says so.
 
     Parameters
     ----------
@@ -439,10 +454,13 @@ def prove_certificate(fun, family: str, bound: float, start_region: float, certi
         function is not tried.
     A_requested : float
         The bound asked of the quadratic function (used where nothing is certified).
+    designed_fraction : float
+        The start radius asked of a designed function's proof, as a fraction (in (0, 1]) of the
+        numerical one.
 
     Returns
     -------
-    proof : Proof or None
+    proof : Proof or DesignedLevelProof or None
         The prover's result, None where no prover takes the function.
     part : ProvedPart
         What is proved, as fractions of the numerical certificate, or why nothing is.
@@ -450,12 +468,14 @@ def prove_certificate(fun, family: str, bound: float, start_region: float, certi
     Raises
     ------
     ValueError
-        An unknown family.
+        An unknown family, a fraction outside (0, 1].
     """
-    from .proof import designed_quadratic_form, prove_designed
+    from .designed_proof import designed_parts, prove_designed_level
 
     if family not in ("quadratic",) + FAMILIES:
         raise ValueError(f"family must be one of {('quadratic',) + FAMILIES}, got {family!r}")
+    if not (0.0 < float(designed_fraction) <= 1.0):
+        raise ValueError(f"designed_fraction must lie in (0, 1], got {designed_fraction!r}")
 
     def unproved(why: str, method: str = "") -> tuple[None, ProvedPart]:
         nan = float("nan") if not certified else 0.0
@@ -471,14 +491,13 @@ def prove_certificate(fun, family: str, bound: float, start_region: float, certi
             return unproved(f"the {family} function certified nothing numerically: there is no bound to prove")
         if not fun.autonomous:
             return unproved(f"the designed {family} function's coefficients depend on the azimuth (forward "
-                            "flight); prove_designed encloses autonomous quadratic forms only")
+                            "flight); the level-set prover takes autonomous (hover) functions only")
         try:
-            designed_quadratic_form(fun)
+            designed_parts(fun)
         except ValueError as exc:
-            return unproved(f"the designed {family} function is not a quadratic form of the state ({exc}); "
-                            "the provers enclose quadratic forms only")
+            return unproved(f"the designed {family} function has terms the prover's models do not hold ({exc})")
         method = _METHODS["designed"]
-        proof = prove_designed(fun, bound)
+        proof = prove_designed_level(fun, float(designed_fraction) * start_region, numerical_start=start_region)
     ok = bool(proof.proved) and proof.A > 0
     if certified:
         fa = proof.A / bound if ok and bound > 0 else 0.0

@@ -227,7 +227,7 @@ def energy_basis(blade: Blade, steady=None, *, scales=None, harmonics: int | Non
         dw, fx = fun.dW_and_f(psi, x)
         return c[0] * (dw / size) + forms.rate_with_f(psi, x, c[1:], fx)
 
-    return replace(energy + forms, rate_of=rate_of)
+    return replace(energy + forms, rate_of=rate_of, energy_reference=size)
 
 
 def polynomial_basis(blade: Blade, steady=None, *, scales=None, degrees=(2, 3, 4),

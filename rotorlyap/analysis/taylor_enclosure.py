@@ -58,6 +58,9 @@ __all__ = ["TaylorEvaluation", "taylor_evaluate"]
 _rhs_terms = types.FunctionType(_scalar.rhs_terms_into.__code__,
                                 {**_scalar.rhs_terms_into.__globals__, "math": TaylorMath},
                                 "rhs_terms_into_taylor")
+_rhs_dw_terms = types.FunctionType(_scalar.rhs_dw_terms_into.__code__,
+                                   {**_scalar.rhs_dw_terms_into.__globals__, "math": TaylorMath},
+                                   "rhs_dw_terms_into_taylor")
 
 
 @dataclass(frozen=True)
@@ -83,15 +86,25 @@ class TaylorEvaluation:
         Shape ``batch + (n_strips, 2)``: the range (lower, upper bound) of each strip's angle of
         attack over each box, rad (NaN where the relative wind may vanish); None for a blade
         without air loads.
+    state : list of TaylorModel or None
+        The models of the six state components ``xi + x`` the equations were evaluated on (hover:
+        the box variables plus the steady state), for functions of the state that must use the
+        same model variables (:mod:`rotorlyap.analysis.designed_proof`).
+    terms : list or None
+        With ``energy_terms``: the generated ``rhs_dw_terms`` rows (0-5 the mass matrix's unique
+        entries, 42-44 ``1/2 Omega^2 x_r^T dM/dq x_r``, 45-47 ``grad U``, in J) as models of the
+        state, for the energy's derivative; None otherwise.
     """
 
     value: TaylorModel
-    jacobian: TaylorModel
+    jacobian: TaylorModel | None
     centre: np.ndarray
     radius: np.ndarray
     order: int
     n_intervals: int | None = None
     angles: np.ndarray | None = None
+    state: list | None = None
+    terms: list | None = None
 
 
 def _unit_gradients(n: int, shape: tuple, sp) -> list[TaylorModel]:
@@ -416,7 +429,8 @@ def _fitted_motion(values: np.ndarray, slopes: np.ndarray, n: int, degree: int =
 
 
 def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
-                    n_intervals: int | None = None, strips=None) -> TaylorEvaluation:
+                    n_intervals: int | None = None, strips=None, jacobian: bool = True,
+                    energy_terms: bool = False) -> TaylorEvaluation:
     """The disturbed equations of the blade on Taylor models over boxes of disturbances.
 
     Parameters
@@ -441,6 +455,12 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
         some out encloses another blade than this one: it measures what each strip's loads add to
         the models' remainders (:func:`rotorlyap.analysis.proof.remainder_sources`), and proves
         nothing about the blade.
+    jacobian : bool
+        Also the Jacobian's models (default). Without, the state carries no gradient and the
+        evaluation costs about a seventh (the right-hand side's models are the same).
+    energy_terms : bool
+        Evaluate the equations' terms by the generated ``rhs_dw_terms`` (the same rows and the
+        energy's, :attr:`TaylorEvaluation.terms`), for the energy's ``W'`` on the same models.
 
     Returns
     -------
@@ -485,14 +505,20 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
             xs = [vs[i] + xi[i] for i in range(6)]
         shape = xs[0].shape
         sp = xs[0].space
-        z = [Jet(x, g) for x, g in zip(xs, _unit_gradients(6, shape, sp))]
+        grads = _unit_gradients(6, shape, sp) if jacobian else [None] * 6
+        z = [Jet(x, g) for x, g in zip(xs, grads)]
         c0, c1, c2 = enclosure.controls
         if psi is not None and sc[_CYCLIC] != 0.0:
             theta_c = tm.cos(psi) * c1 + tm.sin(psi) * c2 + c0
         else:
             theta_c = iv.const(c0)
-        T = [None] * 42
-        _rhs_terms(z[0], z[1], z[2], z[3], z[4], z[5], theta_c, enclosure.params, T)
+        if energy_terms:
+            T = [None] * 49
+            x_r = [z[3 + i] - float(xi_rate) for i, xi_rate in enumerate(_steady_rates(enclosure))]
+            _rhs_dw_terms(z[0], z[1], z[2], z[3], z[4], z[5], theta_c, x_r[0], x_r[1], x_r[2], enclosure.params, T)
+        else:
+            T = [None] * 42
+            _rhs_terms(z[0], z[1], z[2], z[3], z[4], z[5], theta_c, enclosure.params, T)
         F = [T[6 + i] - z[3 + i] * float(sc[(_C0, _C1, _C2)[i]]) for i in range(3)]
         blocked = np.zeros(shape, dtype=bool)
         angles = None
@@ -505,13 +531,29 @@ def taylor_evaluate(enclosure: BladeEnclosure, centre, radius, order: int, *,
     rows = [z[3], z[4], z[5]] + acc
     value = tm.stack([_as_model(q.v if dxi is None else q.v - dxi[i], shape, sp) for i, q in enumerate(rows)],
                      axis=-1)
-    jac = tm.stack([_as_model(q.gradient(6), (6,) + shape, sp) for q in rows], axis=0)  # (6 rows, 6 cols) + batch
-    jac = jac.moveaxis(0, -1).moveaxis(0, -1)
+    jac = None
+    if jacobian:
+        jac = tm.stack([_as_model(q.gradient(6), (6,) + shape, sp) for q in rows], axis=0)  # (6 rows, 6 cols) + batch
+        jac = jac.moveaxis(0, -1).moveaxis(0, -1)
     if np.any(blocked):
         value = tm.where(~blocked[..., None], value, TaylorModel(np.full(value.coef.shape, np.nan), np.nan, sp))
-        jac = tm.where(~blocked[..., None, None], jac, TaylorModel(np.full(jac.coef.shape, np.nan), np.nan, sp))
+        if jac is not None:
+            jac = tm.where(~blocked[..., None, None], jac, TaylorModel(np.full(jac.coef.shape, np.nan), np.nan, sp))
     return TaylorEvaluation(value=value, jacobian=jac, centre=c, radius=r, order=int(order),
-                            n_intervals=None if n_intervals is None else int(n_intervals), angles=angles)
+                            n_intervals=None if n_intervals is None else int(n_intervals), angles=angles,
+                            state=list(xs), terms=[_value(t) for t in T] if energy_terms else None)
+
+
+def _steady_rates(enclosure: BladeEnclosure) -> np.ndarray:
+    """The steady motion's hinge rates (hover: its constant state's), rad/rad."""
+    if enclosure.motion is not None:
+        raise ValueError("energy_terms takes a constant steady motion (hover)")
+    return np.asarray(enclosure.state[3:6], dtype=float)
+
+
+def _value(t):
+    """The value of a Jet (a model, balls or a float), else ``t``."""
+    return t.v if isinstance(t, Jet) else t
 
 
 def _as_model(x, shape: tuple, sp) -> TaylorModel:

@@ -8,6 +8,8 @@
   :func:`rotorlyap.analysis.region.stable_region`; every number recomputed;
 * :func:`anatomy`: a designed function taken apart (the energy's share, where ``W'`` turns
   positive beyond the bound);
+* the designed function of :data:`LEVEL_PROOF_CASES` proved on a level set
+  (:func:`rotorlyap.analysis.designed_proof.prove_designed_level`);
 * :func:`bound_angles`: in hover, the strips' angles of attack at the certified bound along each
   hinge alone (how far the band reaches into the airfoil's stall);
 * :func:`figure_reach`: the certified start set and its inner ball along each hinge angle and
@@ -18,7 +20,6 @@
 
 from __future__ import annotations
 
-import inspect
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -27,7 +28,8 @@ import numpy as np
 
 from ..analysis.certificate_file import FAMILY_WORDS, read_certificate, verify
 from ..analysis.certify import Candidate, certify, function_start_set
-from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width, prove_designed
+from ..analysis.designed_proof import DesignedLevelProof, prove_designed_level
+from ..analysis.proof import EnclosureWidth, designed_quadratic_form, enclosure_width
 from ..analysis.region import DEFAULT_S_MAX, SLICES, StableRegion, stable_region
 from ..analysis.sweep import process_map
 from ..conventions import DEFAULT_SCALES, HINGES, STATE_NAMES
@@ -38,7 +40,8 @@ from ..reporting import degrees
 from .style import CG_COLORS, HINGE_COLORS, finish, subplots
 
 __all__ = ["ANATOMY_POLISH", "ANATOMY_RADII", "ANATOMY_SAMPLES", "Anatomy", "BoundAngles", "CASES", "Case",
-           "CaseResult", "LargeDisturbances", "ProofLimit", "SET_SLICE_POINTS", "TAYLOR_ORDER", "WIDTH_BOUNDS",
+           "CaseResult", "LEVEL_PROOF_CASES", "LEVEL_PROOF_FRACTION", "LargeDisturbances", "ProofLimit",
+           "SET_SLICE_POINTS", "TAYLOR_ORDER", "WIDTH_BOUNDS",
            "anatomy", "bound_angles", "figure_reach", "figure_slices", "large_disturbances", "proof_limit", "set_slice"]
 
 
@@ -252,8 +255,8 @@ class CaseResult:
         The designed function of the certificate taken apart (None where the quadratic function
         certifies).
     proof : ProofLimit or None
-        The proof of the designed function and what limits it (:func:`proof_limit`; None where
-        the certificate's function is not a quadratic form in hover).
+        What limited the ball-arithmetic proof of a designed quadratic form (:func:`proof_limit`;
+        None where the certificate's function is not a quadratic form in hover).
     verification : str
         For a case with a certificate file: the summary of its verification
         (:meth:`rotorlyap.analysis.certificate_file.Verification.summary`); empty otherwise.
@@ -265,6 +268,10 @@ class CaseResult:
     bound_angles : BoundAngles or None
         In hover, the strips' angles of attack with the default certificate's bound along each
         hinge alone (:func:`bound_angles`); None in forward flight or where nothing is certified.
+    level_proof : DesignedLevelProof or None
+        For :data:`LEVEL_PROOF_CASES`: the certificate file's function proved on a level set
+        (:func:`rotorlyap.analysis.designed_proof.prove_designed_level`, start radius
+        :data:`LEVEL_PROOF_FRACTION` of the file's); None for the others.
     """
 
     case: Case
@@ -279,6 +286,7 @@ class CaseResult:
     set_slices: dict = field(default_factory=dict)
     verification: str = ""
     bound_angles: "BoundAngles | None" = None
+    level_proof: DesignedLevelProof | None = None
 
     def candidate(self, function: str) -> Candidate | None:
         """The candidate of ``function`` (None if not tried)."""
@@ -448,14 +456,11 @@ WIDTH_BOUNDS = (0.1, 0.01)
 
 @dataclass(frozen=True)
 class ProofLimit:
-    """The ball-arithmetic proof of a designed quadratic form and what limits it.
+    """What limited the ball-arithmetic proof, and what Taylor models change: the enclosure of
+    the blade's Jacobian about the equilibrium of a designed quadratic form's case.
 
     Attributes
     ----------
-    A : float
-        The proved bound, scaled norm (0: nothing proved).
-    lambda0 : float
-        The proved start radius, scaled norm.
     widths : tuple of rotorlyap.analysis.proof.EnclosureWidth
         The enclosure of the Jacobian on the boxes of half-widths :data:`WIDTH_BOUNDS` against the
         sampled Jacobian.
@@ -466,8 +471,6 @@ class ProofLimit:
         which keep the cancellations, on the first box.
     """
 
-    A: float
-    lambda0: float
     widths: tuple[EnclosureWidth, ...]
     width_without_air: EnclosureWidth
     width_taylor: EnclosureWidth
@@ -482,16 +485,26 @@ class ProofLimit:
 #: linearly with the box; 2 keeps the blade's cancellations to the sampled variation).
 TAYLOR_ORDER = 2
 
+#: The cases whose designed function the chapter proves on a level set (start radius half the
+#: numerical one, :data:`LEVEL_PROOF_FRACTION`). Measured 2026-12-06 on an AMD EPYC (one core,
+#: benchmarks/bench_designed_proof.py): the forward C.G. in 64 s; the neutral C.G. in 48 s; the
+#: backward C.G.'s is not proved (its W' has a margin of a few millionths on the level set, below
+#: the models' remainders). The chapter proves the forward C.G.'s, the function of its findings;
+#: the benchmark proves the others.
+LEVEL_PROOF_CASES = ("forward",)
+
+#: The start radius the chapter's level-set proof asks, as a fraction of the numerical one.
+LEVEL_PROOF_FRACTION = 0.5
+
 
 def proof_limit(fun) -> ProofLimit:
-    """Prove a designed hover function that is a quadratic form (:func:`rotorlyap.analysis.proof.prove_designed`)
-    and measure the enclosure of the blade's Jacobian it rests on (:func:`rotorlyap.analysis.proof.enclosure_width`)."""
-    proof = prove_designed(fun)
+    """Measure the enclosure of the blade's Jacobian the ball-arithmetic proof rested on
+    (:func:`rotorlyap.analysis.proof.enclosure_width`), in balls and in Taylor models."""
     widths = tuple(enclosure_width(fun.blade, fun.steady, b, scales=fun.scales) for b in WIDTH_BOUNDS)
     dry = enclosure_width(fun.blade, fun.steady, WIDTH_BOUNDS[0], scales=fun.scales, aerodynamics=False)
     taylor = enclosure_width(fun.blade, fun.steady, WIDTH_BOUNDS[0], scales=fun.scales, arithmetic="taylor",
                              order=TAYLOR_ORDER)
-    return ProofLimit(proof.A, proof.min_lambda0, widths, dry, taylor)
+    return ProofLimit(widths, dry, taylor)
 
 
 def _is_quadratic_form(fun) -> bool:
@@ -561,10 +574,15 @@ def bound_angles(fun, A: float, scales) -> BoundAngles:
 
 
 def _compute(task: tuple[str, Case, Path | None]):
-    """One task of a worker process: ``("certificate", case, folder)`` or ``("region", case, folder)``."""
+    """One task of a worker process: ``("certificate", case, folder)``, ``("region", case, folder)`` or
+    ``("level", case, folder)`` (the level-set proof of the case's certificate file)."""
     kind, case, folder = task
     if kind == "region":
         return stable_region(case.params(), case.mu, condition=case.condition)
+    if kind == "level":
+        stored = read_certificate(Path(folder) / case.file)
+        lam = float(stored.lambda0.min())
+        return prove_designed_level(stored.function, LEVEL_PROOF_FRACTION * lam, numerical_start=lam)
     cert = certify(case.params(), case.mu, condition=case.condition, function=case.function, scales=case.scales)
     candidates = tuple(cert.candidates)
     fun, level, bound, lam0, chosen, certified = (cert.lyapunov, cert.result.level if cert.certified else math.nan,
@@ -733,10 +751,18 @@ class LargeDisturbances:
                                f"W' >= 0 at {_sig(100 * fr):g} % of the sampled directions")
             if r.bound_angles is not None and np.any(np.isfinite(r.set_reach(r.chosen))):
                 out.append("    " + _bound_angle_words(r))
+            if r.level_proof is not None:
+                lp = r.level_proof
+                if lp.proved:
+                    out.append(f"    proved on a level set (Taylor models of order {lp.order}, branch and bound over "
+                               f"boxes): W <= {_sig(lp.level, 3):g} invariant, start radius {_sig(lp.min_lambda0):g} "
+                               f"({_pct(lp.start_fraction)} % of the numerical {_sig(lp.numerical_start):g}), bound "
+                               f"{_sig(lp.A):g}")
+                else:
+                    out.append(f"    not proved on a level set: {lp.proof.reason}")
             if r.proof is not None:
                 pl = r.proof
-                out.append(f"    proved (Taylor models, branch and bound on the band): A = {_sig(pl.A):g}, lambda0 = {_sig(pl.lambda0):g}; "
-                           f"Jacobian enclosure on |y_i| <= {pl.width.bound:g}: radius up to "
+                out.append(f"    Jacobian enclosure on |y_i| <= {pl.width.bound:g}: radius up to "
                            f"{_sig(pl.width.radius.max()):g} ({_sig(pl.width_without_air.radius.max()):g} without air "
                            f"loads), sampled variation {_sig(pl.width.variation.max()):g}, contains the sample: "
                            f"{'yes' if pl.width.contained else 'no'}; on |y_i| <= {pl.widths[-1].bound:g}: radius up to "
@@ -813,11 +839,17 @@ class LargeDisturbances:
                 f["ch11_n_strips"] = int(ba.angles.shape[-1])
                 f["ch11_stall_pos"] = degrees(ba.alpha_stall)
                 f["ch11_stall_neg"] = degrees(ba.alpha_stall_negative)
+            if r.level_proof is not None and r.level_proof.proved:
+                lp = r.level_proof
+                f[f"ch11_{k}_level_start"] = _sig(lp.min_lambda0)
+                f[f"ch11_{k}_level_share"] = _pct(lp.start_fraction)
+                f[f"ch11_{k}_level_flap"] = _sig(r.per_component(lp.min_lambda0)[0])
+                f[f"ch11_{k}_level_bound"] = _sig(lp.A)
+                f[f"ch11_{k}_level_bound_flap"] = _sig(r.per_component(lp.A)[0])
+                f[f"ch11_{k}_level_asked"] = _pct(LEVEL_PROOF_FRACTION)
+                f["ch11_level_order"] = str(lp.order)
             if r.proof is not None:
                 pl = r.proof
-                f[f"ch11_{k}_proof_A"] = _sig(pl.A)
-                f[f"ch11_{k}_proof_flap"] = _sig(r.per_component(pl.lambda0)[0])
-                f[f"ch11_{k}_proof_share"] = _sig(100 * pl.lambda0 / e.start_region)
                 w, dry = pl.width, pl.width_without_air
                 f["ch11_width_bound"] = _sig(w.bound)
                 f["ch11_width_bound_flap"] = _sig(r.per_component(w.bound)[0])
@@ -833,8 +865,6 @@ class LargeDisturbances:
                 f["ch11_width_taylor_radius"] = _sig(pl.width_taylor.radius.max())
                 f["ch11_width_taylor_ratio"] = f"{pl.width_taylor.ratio:.2f}"
                 f["ch11_width_taylor_order"] = str(TAYLOR_ORDER)
-                # the order of the proof's models (prove_designed's default), which the text quotes beside it
-                f["ch11_proof_taylor_order"] = str(inspect.signature(prove_designed).parameters["order"].default)
             f[f"ch11_{k}_q_A"] = _sig(q.bound)
             f[f"ch11_{k}_growth"] = _sig(r.growth_rate)
         if gains:
@@ -883,6 +913,8 @@ def large_disturbances(cases=CASES, *, workers: int | None = None,
 
     def cost(task):
         kind, case, _ = task
+        if kind == "level":
+            return 5
         if kind == "region":
             return 1
         if case.file is not None:  # the quadratic function, then the file's verification
@@ -891,6 +923,7 @@ def large_disturbances(cases=CASES, *, workers: int | None = None,
 
     folder = Path(certificates)
     tasks = [(kind, c, folder) for c in cases for kind in ("certificate", "region")]
+    tasks += [("level", c, folder) for c in cases if c.key in LEVEL_PROOF_CASES and c.file is not None]
     order = sorted(range(len(tasks)), key=lambda i: -cost(tasks[i]))
     done = process_map(_compute, [tasks[i] for i in order], workers)
     out = {tasks[i][:2]: v for i, v in zip(order, done)}
@@ -898,7 +931,7 @@ def large_disturbances(cases=CASES, *, workers: int | None = None,
     for c in cases:
         omega, scales, growth, chosen, candidates, parts, proof, slices, checked, angles = out[("certificate", c)]
         results.append(CaseResult(c, omega, scales, growth, chosen, candidates, out[("region", c)], parts, proof,
-                                  slices, checked, angles))
+                                  slices, checked, angles, out.get(("level", c))))
     return LargeDisturbances(tuple(results))
 
 

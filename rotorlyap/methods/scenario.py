@@ -75,6 +75,10 @@ class Basis:
         ``W'`` evaluate, millions of times in the engine's searches. For the augmented energy at
         mu = 0.1 the matrix cost 4.3 of the 7.6 us a state of ``W`` took (measured, 100 000
         states at one azimuth); None: ``values(psi, x) @ c``.
+    energy_reference : float, optional
+        The divisor ``H_ref`` (J) of a basis function named ``"energy"`` (the augmented energy's,
+        :func:`rotorlyap.analysis.nonlinear_functions.energy_basis`), for a prover that rebuilds
+        the function in another arithmetic; None where the basis has none.
     """
 
     names: tuple[str, ...]
@@ -83,6 +87,7 @@ class Basis:
     value_of: Combination | None = field(default=None, compare=False)
     rate_of: Combination | None = field(default=None, compare=False)
     rate_with_f: Callable | None = field(default=None, compare=False)
+    energy_reference: float | None = field(default=None, compare=False)
 
     @property
     def size(self) -> int:
