@@ -26,7 +26,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..conventions import STATE_NAMES
 from ..methods import intervals as iv
 from ..methods import taylor as tm
 from ..methods.balls import Balls
@@ -36,14 +35,13 @@ from ..methods.taylor import TaylorMath
 from ..model._generated import blade_scalar as _scalar
 from ..model.compiled import _OMEGA
 from .enclosure import BladeEnclosure
+from .proof import quadratic_terms
 from .taylor_enclosure import taylor_evaluate
 
 __all__ = ["DEFAULT_ORDER", "DesignedLevelProof", "designed_models", "designed_parts", "prove_designed_level"]
 
 DEFAULT_ORDER = 3
 """Order of the Taylor models of :func:`designed_models`."""
-
-_STATE_INDEX = {name: i for i, name in enumerate(STATE_NAMES)}
 
 _dw_terms = types.FunctionType(_scalar.rhs_dw_terms_into.__code__,
                                {**_scalar.rhs_dw_terms_into.__globals__, "math": TaylorMath}, "rhs_dw_terms_taylor")
@@ -65,30 +63,13 @@ def designed_parts(fun) -> tuple[float, float, np.ndarray]:
     if not getattr(fun, "autonomous", False):
         raise ValueError("the level-set proof takes autonomous (hover) designed functions; in forward flight "
                          "the coefficients depend on the azimuth")
-    bf = fun.function
-    S = np.zeros((6, 6))
-    c0, others = 0.0, []
-    for name, c in zip(bf.basis.names, bf.coefficients):
-        c = float(c)
-        if name == "energy":
-            c0 = c
-            continue
-        factors = []
-        for part in name.split("*"):
-            var, _, power = part.partition("^")
-            factors += [var] * (int(power) if power else 1)
-        idx = [_STATE_INDEX.get(v) for v in factors]
-        if len(idx) == 2 and None not in idx:
-            i, j = sorted(idx)
-            if i == j:
-                S[i, i] = c
-            else:
-                S[i, j] = S[j, i] = 0.5 * c                    # exact
-        elif c != 0.0:
-            others.append(f"{name} ({c:.3g})")
+    S, others = quadratic_terms(fun)
+    c0 = float(others.pop("energy", 0.0))
     if others:
+        listed = [f"{name} ({c:.3g})" for name, c in others.items()]
         raise ValueError("the level-set proof takes the energy and quadratic monomials; this function has "
-                         "nonzero weights on " + ", ".join(others[:4]) + (" ..." if len(others) > 4 else ""))
+                         "nonzero weights on " + ", ".join(listed[:4]) + (" ..." if len(listed) > 4 else ""))
+    bf = fun.function
     H_ref = bf.basis.energy_reference if c0 else 1.0
     if H_ref is None or not (np.isfinite(H_ref) and H_ref > 0):
         raise ValueError("the function's energy term has no divisor H_ref recorded on its basis "

@@ -94,7 +94,7 @@ for 0.70): ratio 0.9 or 0.85 from the first bound 0.8, with 32 or 64 model inter
 0.8 and prove 0.72, in 81 to 86 s."""
 
 __all__ = ["BladeProofSystem", "EnclosureWidth", "RemainderSources", "designed_quadratic_form", "enclosure_width",
-           "proof_problem", "prove_blade", "prove_designed", "remainder_sources"]
+           "proof_problem", "prove_blade", "prove_designed", "quadratic_terms", "remainder_sources"]
 
 
 def _spread(balls: np.ndarray, blocked: dict, rep: int):
@@ -387,13 +387,26 @@ def designed_quadratic_form(fun) -> np.ndarray:
         A function with a nonzero weight on any other term (the energy, a harmonic of the azimuth,
         a cubic or quartic monomial): the proof encloses quadratic forms only.
     """
+    S, others = quadratic_terms(fun)
+    if others:
+        listed = [f"{name} ({c:.3g})" for name, c in others.items()]
+        raise ValueError("the proof encloses quadratic forms of the scaled state; this function has nonzero "
+                         "weights on " + ", ".join(listed[:4]) + (" ..." if len(listed) > 4 else ""))
+    return S
+
+
+def quadratic_terms(fun) -> tuple[np.ndarray, dict]:
+    """A designed function's quadratic monomials of the scaled state as the symmetric ``S`` of
+    ``y^T S y`` (``S_ii`` the weight of ``y_i^2``, ``S_ij = S_ji`` half that of ``y_i y_j``,
+    exact), and the nonzero weights of its other terms (name -> weight: the energy, a harmonic of
+    the azimuth, a cubic or quartic monomial)."""
     bf = fun.function
     S = np.zeros((6, 6))
-    others = []
+    others = {}
     for name, c in zip(bf.basis.names, bf.coefficients):
-        parts = name.split("*")
+        c = float(c)
         factors = []
-        for p in parts:
+        for p in name.split("*"):
             var, _, power = p.partition("^")
             factors += [var] * (int(power) if power else 1)
         idx = [_STATE_INDEX.get(v) for v in factors]
@@ -404,11 +417,8 @@ def designed_quadratic_form(fun) -> np.ndarray:
             else:
                 S[i, j] = S[j, i] = 0.5 * c
         elif c != 0.0:
-            others.append(f"{name} ({c:.3g})")
-    if others:
-        raise ValueError("the proof encloses quadratic forms of the scaled state; this function has nonzero "
-                         "weights on " + ", ".join(others[:4]) + (" ..." if len(others) > 4 else ""))
-    return S
+            others[name] = c
+    return S, others
 
 
 def prove_designed(fun, A: float | None = None, *, n_bisect: int = 8, arithmetic: str | None = None,

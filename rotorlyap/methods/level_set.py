@@ -21,8 +21,8 @@ gets Taylor models of ``W`` (and of ``W'``, once it is no wider than ``rate_widt
 caller (:class:`rotorlyap.methods.taylor.TaylorModel`: polynomials with rigorous remainders).
 A model's range over its box takes every monomial at its extreme separately, which for the
 large boxes this needs is far too wide; over small sub-boxes of the same model
-(:func:`rotorlyap.methods.taylor.restrict`, the polynomial re-expanded, its remainder kept) it is
-tight. So each box is decided on sub-boxes: ``2^n`` halves, and the open ones cut again, up to
+(:func:`rotorlyap.methods.taylor.split`, the polynomial re-expanded exactly on each half, its
+remainder kept) it is tight. So each box is decided on sub-boxes: ``2^n`` halves, and the open ones cut again, up to
 ``SUB_DEPTH`` levels. A sub-box is closed
 
 * where ``W > c`` on all of it (outside the level set), or ``W < c`` (inside);
@@ -35,9 +35,9 @@ tight. So each box is decided on sub-boxes: ``2^n`` halves, and the open ones cu
 A box is closed when all its sub-boxes are; one wider than ``rate_width``, or one meeting the
 boundary of ``K``, hands its open halves on as new boxes (decided on ``W``'s models alone: a
 box on the boundary must lie outside the level set); one whose sub-boxes do not all close is
-bisected along its longest side and its halves evaluated again (smaller boxes, smaller
-remainders); a box that does not close at :data:`MIN_WIDTH` ends the search (no proof at this
-level). The boxes are dyadic centres and half-widths (``R`` rounded up to a multiple of
+taken again over its halves that hold an open sub-box, with new models (half the width, a
+remainder some ``2^(order + 1)`` times smaller); a box that does not close at :data:`MIN_WIDTH`
+of the cube ends the search (no proof at this level). The boxes are dyadic centres and half-widths (``R`` rounded up to a multiple of
 ``2^-6``): every split covers its box exactly; the caller widens each box it models by the
 rounding of its change of variables.
 
@@ -98,7 +98,8 @@ class LevelProof:
     rate_boxes : int
         Boxes on which ``W'`` was evaluated (those that may meet the level set).
     smallest : float
-        The smallest half-width of a closed box.
+        The finest resolution the proof needed: over the boxes, the least of the largest
+        half-width of the sub-boxes that closed each.
     reason : str
         Why the proof failed ("" where it holds).
     """
