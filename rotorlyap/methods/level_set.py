@@ -130,13 +130,12 @@ def _norms(C: np.ndarray, H: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return lo, hi
 
 
-def _extent(box, C, H, sc, sr, beyond, within, lam, A):
-    """Update the least distance ``lam`` (of sub-boxes where ``W >= c`` may hold: ``beyond``) and
-    the greatest ``A`` (where ``W <= c`` may: ``within``) per box, from sub-boxes ``sc +- sr``."""
+def _extent(box, C, H, sc, sr, within, A):
+    """Update the greatest distance ``A`` from the origin, per box, of its sub-boxes ``sc +- sr``
+    where ``W <= c`` may hold (``within``)."""
     if box.size == 0:
         return
-    lo, hi = _norms(C[box] + H[box] * sc, H[box] * sr)       # exact: dyadic
-    np.minimum.at(lam, box[beyond], lo[beyond])
+    hi = _norms(C[box] + H[box] * sc, H[box] * sr)[1]         # exact: dyadic
     np.maximum.at(A, box[within], hi[within])
 
 
@@ -174,7 +173,6 @@ def _sub_boxes(W: TaylorModel, dW: TaylorModel, C: np.ndarray, H: np.ndarray, le
     half-width of its closed sub-boxes (scaled norm)."""
     m, n = C.shape
     closed = np.ones(m, dtype=bool)
-    lam = np.full(m, np.inf)
     A = np.zeros(m)
     width = np.zeros(m)
     box = np.arange(m)
@@ -205,7 +203,7 @@ def _sub_boxes(W: TaylorModel, dW: TaylorModel, C: np.ndarray, H: np.ndarray, le
             ok[todo] |= _range(g)[1] < kck
         yh = H[box] * sr
         np.maximum.at(width, box[ok], yh[ok].max(axis=-1))
-        _extent(box[ok], C, H, sc[ok], sr[ok], ~inside[ok], ~outside[ok], lam, A)
+        _extent(box[ok], C, H, sc[ok], sr[ok], ~outside[ok], A)
         open_ = ~ok
         if not open_.any():
             break
@@ -216,7 +214,7 @@ def _sub_boxes(W: TaylorModel, dW: TaylorModel, C: np.ndarray, H: np.ndarray, le
             break
         Wr, Dr = Wr[open_], Dr[open_]
         box, sc, sr, first = box[open_], sc[open_], sr[open_], first[open_]
-    return closed, lam, A, width, reopen
+    return closed, A, width, reopen
 
 
 def tm_stack_rows(a: TaylorModel, b: TaylorModel) -> TaylorModel:
@@ -279,7 +277,7 @@ def prove_level(models: ModelFunction, level: float, cube: float, n: int, *, kap
     g = (np.arange(k) + 0.5) * (2.0 * R / k) - R                 # dyadic: exact
     C = np.stack(np.meshgrid(*[g] * n, indexing="ij"), -1).reshape(-1, n)
     todo = [(C, np.full_like(C, R / k))]
-    lam, A = np.inf, 0.0
+    A = 0.0
     boxes = rate_boxes = 0
     smallest = np.inf
     # the multipliers' kappa c rounded down (the test is sup(W' + kappa W) < kappa c)
@@ -323,7 +321,7 @@ def prove_level(models: ModelFunction, level: float, cube: float, n: int, *, kap
             idx = np.flatnonzero(rated)
             rate_boxes += idx.size
             W, dW = models(C[idx], H[idx], True)
-            ok, _, A_b, h_b, (which, centre) = _sub_boxes(W, dW, C[idx], H[idx], level, kap, kc, depth)
+            ok, A_b, h_b, (which, centre) = _sub_boxes(W, dW, C[idx], H[idx], level, kap, kc, depth)
             closed[idx] = True                   # closed, or handed on to its open halves
             if which.size:
                 b = idx[which]
