@@ -36,15 +36,13 @@ from ..model._generated import blade_scalar as _scalar
 from ..model.compiled import _OMEGA
 from .enclosure import BladeEnclosure
 from .proof import quadratic_terms
-from .taylor_enclosure import taylor_evaluate
+from .taylor_enclosure import _rhs_dw_terms, taylor_evaluate
 
 __all__ = ["DEFAULT_ORDER", "DesignedLevelProof", "designed_models", "designed_parts", "prove_designed_level"]
 
 DEFAULT_ORDER = 3
 """Order of the Taylor models of :func:`designed_models`."""
 
-_dw_terms = types.FunctionType(_scalar.rhs_dw_terms_into.__code__,
-                               {**_scalar.rhs_dw_terms_into.__globals__, "math": TaylorMath}, "rhs_dw_terms_taylor")
 _potential_terms = types.FunctionType(_scalar.potential_terms_into.__code__,
                                       {**_scalar.potential_terms_into.__globals__, "math": TaylorMath},
                                       "potential_terms_taylor")
@@ -142,7 +140,7 @@ def designed_models(fun, order: int = DEFAULT_ORDER):
             if c0:
                 if T is None:
                     T = [None] * 49
-                    _dw_terms(z[0], z[1], z[2], z[3], z[4], z[5], theta_c, x[3], x[4], x[5], enc.params, T)
+                    _rhs_dw_terms(z[0], z[1], z[2], z[3], z[4], z[5], theta_c, x[3], x[4], x[5], enc.params, T)
                 P = [None] * 14
                 _potential_terms(z[0], z[1], z[2], theta_c, enc.params, P)
                 m00, m01, m02, m11, m12, m22 = T[0:6]
