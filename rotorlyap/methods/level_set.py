@@ -330,7 +330,9 @@ def prove_level(models: ModelFunction, level: float, cube: float, n: int, *, kap
                     return fail(f"a box of half-width {hh.max():.3g} at |y| = {np.linalg.norm(C[b[0]]):.3g}: "
                                 "W' + kappa W not below kappa c")
                 children.append((C[b] + H[b] * centre, hh))
-            A = max(A, float(np.max(A_b[ok], initial=0.0)))
+            # every closed sub-box counts, also those of a box handed on: its halves that closed are not
+            # taken again
+            A = max(A, float(np.max(A_b, initial=0.0)))
             if ok.any():
                 smallest = min(smallest, float(np.min(h_b[ok])))
         for cc, ch in children:
