@@ -488,7 +488,7 @@ TAYLOR_ORDER = 2
 #: The cases whose designed function the chapter proves on a level set (start radius half the
 #: numerical one, :data:`LEVEL_PROOF_FRACTION`). Measured 2026-12-06 on an AMD EPYC (one core,
 #: benchmarks/bench_designed_proof.py): the forward C.G. in 43 s; the neutral C.G. in 23 s; the
-#: backward C.G. in 237 s (on its level set the sampled W' reaches only -0.0011, so the boxes there
+#: backward C.G. in 230 s (on its level set the sampled W' reaches only -0.0011, so the boxes there
 #: must be a few thousandths wide; README). The chapter proves the forward C.G.'s, the function of
 #: its findings; the benchmark runs the others.
 LEVEL_PROOF_CASES = ("forward",)
