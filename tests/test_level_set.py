@@ -1,4 +1,4 @@
-"""Proofs on one level set (rotorlyap.methods.level_set) and models on sub-boxes (taylor.restrict).
+"""Proofs on one level set (rotorlyap.methods.level_set) and models on the halves of a box (taylor.split).
 
 Facts checked, on systems whose invariant sublevel sets are known in closed form (a prover that
 proves too much fails them):
@@ -14,8 +14,8 @@ proves too much fails them):
   ``W = |x|^2`` has ``W' = -2 |x|^2 (1 - |x|^2)``, the level ``c`` proved exactly for ``c < 1``;
   with ``W = |x|^2 + 0.3 x_1^4`` (not a quadratic form) the prover proves the level 0.8, whose
   set lies within the unit disc, and not a level whose set reaches past it on the ``x_1`` axis;
-* :func:`rotorlyap.methods.taylor.restrict` reproduces the polynomial on the sub-box and encloses
-  it (the expansion exact to rounding, its bounds inside the whole box's);
+* :func:`rotorlyap.methods.taylor.split` reproduces the polynomial on each half and encloses it
+  (the expansion exact to rounding, its bounds inside the whole box's);
 * bad input is refused with a message.
 """
 
@@ -91,30 +91,28 @@ def test_a_function_that_is_not_a_quadratic_form_is_proved_within_the_closed_for
     assert not prove_level(planar(0.3), 1.1, 1.5, 2, min_width=2.0 ** -9).proved
 
 
-def test_restrict_reproduces_and_encloses_the_polynomial_on_the_sub_box():
+def test_split_reproduces_and_encloses_the_polynomial_on_each_half():
     rng = np.random.default_rng(3)
     sp = tm.space(3, 3)
     m = tm.TaylorModel(rng.normal(size=(4, sp.size)), np.full(4, 1e-6), sp)
-    c = np.array([[0.5, -0.5, 0.0], [0.25, 0.75, -0.5], [0.0, 0.0, 0.0], [-0.75, 0.25, 0.5]])
-    r = np.array([[0.5, 0.5, 0.25], [0.25, 0.25, 0.5], [1.0, 1.0, 1.0], [0.25, 0.25, 0.125]])
-    sub = tm.restrict(m, c, r)
-    s = rng.uniform(-1.0, 1.0, (2000, 3))
-    lo, hi = sub.bounds()
-    for i in range(4):
-        exact = m[i](c[i] + r[i] * s)
-        assert np.max(np.abs(sub[i](s) - exact)) < 1e-12
-        assert np.all((lo[i] <= exact) & (exact <= hi[i]))
+    halves, centres = tm.split(m)
+    assert halves.shape == (4, 8) and centres.shape == (8, 3)
+    s = rng.uniform(-1.0, 1.0, (500, 3))
+    lo, hi = halves.bounds()
     whole_lo, whole_hi = m.bounds()
-    assert np.all(hi[:2] < whole_hi[:2]) and np.all(lo[:2] > whole_lo[:2])
+    for i in range(4):
+        for k in range(8):
+            exact = m[i](centres[k] + 0.5 * s)
+            assert np.max(np.abs(halves[i, k](s) - exact)) < 1e-12
+            assert np.all((lo[i, k] <= exact) & (exact <= hi[i, k]))
+        assert np.all(hi[i] <= whole_hi[i]) and np.all(lo[i] >= whole_lo[i])
 
 
 def test_bad_input_is_refused():
     sp = tm.space(2, 2)
-    m = tm.TaylorModel(np.ones((1, sp.size)), np.zeros(1), sp)
-    with pytest.raises(ValueError, match="multiples of 2\\^-8"):
-        tm.restrict(m, np.array([[0.1, 0.0]]), np.array([[0.5, 0.5]]))
-    with pytest.raises(ValueError, match="multiples of 2\\^-8"):
-        tm.restrict(m, np.array([[0.75, 0.0]]), np.array([[0.5, 0.5]]))
+    m = tm.TaylorModel(np.ones((2, 2, sp.size)), np.zeros((2, 2)), sp)
+    with pytest.raises(ValueError, match="shape \\(m,\\)"):
+        tm.split(m)
     with pytest.raises(ValueError, match="finite"):
         prove_level(cubic_1d(1.0), np.nan, 1.0, 1)
     with pytest.raises(ValueError, match="kappas"):

@@ -61,7 +61,7 @@ from . import balls as fb
 from .balls import U, Balls
 from .intervals import Jet, chain
 
-__all__ = ["TaylorMath", "TaylorModel", "TaylorSpace", "atan", "cos", "restrict", "sin", "space", "split", "sqrt", "stack",
+__all__ = ["TaylorMath", "TaylorModel", "TaylorSpace", "atan", "cos", "sin", "space", "split", "sqrt", "stack",
            "variables", "where"]
 
 MAX_ORDER = 8
@@ -693,103 +693,10 @@ def _shift_pairs(n: int, order: int):
     return ei, fi, binom, E[ei] - E[fi], E[fi]
 
 
-@functools.lru_cache(maxsize=None)
-def _scatter(n: int, order: int) -> np.ndarray:
-    """The one-hot matrix (pairs, M) that sums the pairs of :func:`_shift_pairs` into their ``f``."""
-    _, fi, _, _, _ = _shift_pairs(n, order)
-    out = np.zeros((fi.size, space(n, order).size))
-    out[np.arange(fi.size), fi] = 1.0
-    out.setflags(write=False)
-    return out
-
-
-def restrict(model, centre, radius, *, chunk: int = 4096):
-    """Models over sub-boxes of the box: ``t = centre + radius s`` with ``s`` in ``[-1, 1]^n``.
-
-    The polynomial part is expanded about each sub-box: the coefficient of ``s^f`` is
-    ``sum_(e >= f) a_e C(e, f) centre^(e - f) radius^f`` (the binomials and powers exact for the
-    dyadic sub-boxes taken here, so the only roundings are the products with ``a_e`` and their
-    sum, bounded by ``gamma_(P + 1) sum |a_e C(e, f) centre^(e - f) radius^f|``, a float dot
-    product's error bound whatever the order of summation, and added to the remainder); the
-    remainder is the model's. The range of a polynomial over small sub-boxes is far tighter than
-    its bound over the whole box (:meth:`TaylorModel.bounds`, which takes every monomial at its
-    extreme separately).
-
-    Parameters
-    ----------
-    model : TaylorModel, shape ``(m,)``, or a list of them
-        Models of one space (a list: each restricted to the same sub-boxes, the work shared).
-    centre, radius : array_like, shape ``(m, n)``
-        Sub-boxes of ``[-1, 1]^n``, one per model: multiples of ``2^-8``, ``radius > 0``,
-        ``|centre| + radius <= 1``.
-    chunk : int
-        Rows per vectorised step.
-
-    Returns
-    -------
-    TaylorModel, shape ``(m,)``, or a list of them
-
-    Raises
-    ------
-    ValueError
-        Sub-boxes that are not dyadic multiples of ``2^-8``, or not inside ``[-1, 1]^n``, an
-        order above 6, mismatched shapes.
-    """
-    many = isinstance(model, (list, tuple))
-    models = list(model) if many else [model]
-    model = models[0]
-    sp = model.space
-    if any(x.space is not sp or x.shape != model.shape for x in models):
-        raise ValueError("restrict takes models of one space and shape")
-    c = np.asarray(centre, dtype=float)
-    r = np.asarray(radius, dtype=float)
-    m = model.coef.shape[:-1]
-    if model.ndim != 1 or c.shape != m + (sp.n,) or r.shape != c.shape:
-        raise ValueError(f"restrict takes models of shape (m,) and sub-boxes (m, {sp.n}), got {model.shape}, "
-                         f"{c.shape} and {r.shape}")
-    if sp.order > 6:
-        raise ValueError(f"restrict takes models of order <= 6 (exact expansion factors), got {sp.order}")
-    if (np.any(c * 256.0 != np.round(c * 256.0)) or np.any(r * 256.0 != np.round(r * 256.0)) or np.any(r <= 0)
-            or np.any(np.abs(c) + r > 1.0)):
-        raise ValueError("the sub-boxes must be multiples of 2^-8 inside [-1, 1]^n with radius > 0")
-    ei, fi, binom, pc, pr = _shift_pairs(sp.n, sp.order)
-    keys = np.concatenate([c, r], axis=-1)
-    unique, inverse = np.unique(keys, axis=0, return_inverse=True)
-    inverse = inverse.reshape(-1)
-    coefs = [np.empty_like(model.coef) for _ in models]
-    errs = [np.empty(m) for _ in models]
-    if unique.shape[0] <= _GROUPED:      # few sub-boxes, many rows each: one matrix per sub-box
-        order = np.argsort(inverse, kind="stable")
-        bounds = np.searchsorted(inverse[order], np.arange(unique.shape[0] + 1))
-        for g in range(unique.shape[0]):
-            rows = order[bounds[g]:bounds[g + 1]]
-            T, T_abs = _shift_matrix(sp, unique[g, :sp.n].tobytes(), unique[g, sp.n:].tobytes())
-            for x, coef, err in zip(models, coefs, errs):
-                a = x.coef[rows]
-                coef[rows] = a @ T
-                err[rows] = np.abs(a) @ T_abs
-    else:                                # a factor per row and pair, summed by a scatter matrix
-        scatter = _scatter(sp.n, sp.order)
-        factors = _pair_factors(sp, unique[:, :sp.n], unique[:, sp.n:])
-        for lo in range(0, m[0], chunk):
-            f = factors[inverse[lo:lo + chunk]]
-            for x, coef, err in zip(models, coefs, errs):
-                prod = x.coef[lo:lo + chunk][:, ei] * f
-                coef[lo:lo + chunk] = prod @ scatter
-                err[lo:lo + chunk] = np.abs(prod).sum(axis=-1)
-    gamma = (ei.size + 1) * U * _GAMMA_SLACK / (1.0 - (ei.size + 1) * U)
-    out = [TaylorModel._new(coef, _up(x.rem + _up(gamma * err)), sp) for x, coef, err in zip(models, coefs, errs)]
-    return out if many else out[0]
-
-
-_GROUPED = 8192
-"""Sub-boxes up to which :func:`restrict` takes one matrix per sub-box (cached)."""
-
-
 def _pair_factors(sp: TaylorSpace, c: np.ndarray, r: np.ndarray) -> np.ndarray:
     """``C(e, f) c^(e - f) r^f`` per sub-box (rows of ``c``, ``r``) and pair of
-    :func:`_shift_pairs`, shape (rows, pairs): exact for dyadic ``c``, ``r`` (the powers by
-    products)."""
+    :func:`_shift_pairs`, shape (rows, pairs): exact for dyadic ``c``, ``r`` such as the halves'
+    ``+-1/2`` (the powers by products, the binomials small integers)."""
     _, _, binom, pc, pr = _shift_pairs(sp.n, sp.order)
     k = np.arange(sp.n)
     cp = np.ones((sp.order + 1,) + c.shape)
@@ -831,8 +738,14 @@ def _halves(n: int, order: int):
 
 
 def split(model: TaylorModel) -> tuple[TaylorModel, np.ndarray]:
-    """Models over the ``2^n`` halves of the box: :func:`restrict` to the sub-boxes of centre
-    ``+-1/2`` and radius ``1/2`` in every variable, by one product with the expansion matrices.
+    """Models over the ``2^n`` halves of the box (centre ``+-1/2``, radius ``1/2`` in every variable),
+    by one product with the expansion matrices: the coefficient of ``s^f`` in a half is
+    ``sum_(e >= f) a_e C(e, f) c^(e - f) r^f``, the binomials and powers exact, so the only roundings
+    are the products with ``a_e`` and their sum, bounded by ``gamma_(M + 1) sum |a_e| |T[e, f]|`` (a
+    float dot product's error bound whatever the order of summation) and added to the remainder,
+    which is otherwise the model's. The range of a polynomial over small sub-boxes is far tighter
+    than its bound over the whole box (:meth:`TaylorModel.bounds`, which takes every monomial at its
+    extreme separately).
 
     Parameters
     ----------
