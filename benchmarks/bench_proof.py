@@ -6,15 +6,16 @@ For each Table I hover (forward, neutral and backward C.G.) the quadratic functi
 certificate (``certify(params, 0.0, function="quadratic")``: the bound ``A`` and the start radius
 ``lambda0``) and the proof of the same function by
 :func:`rotorlyap.analysis.proof.prove_blade` with ``method="balls"`` (the mean-value form in ball
-arithmetic) and ``method="taylor"`` (Taylor models and branch and bound over the band): the proved
-bound and start radius, their ratios to the numerical ones, and the proof's wall time from a warm
-interpreter (the best of ``--repeat`` runs after one that warms the caches and compiles the
+arithmetic) and ``method="taylor"`` (Taylor models and branch and bound) on the whole band of
+condition (h) (``band``, ``level_set=False``) and on the level set (``level``, the default): the
+proved bound and start radius, their ratios to the numerical ones, and the proof's wall time from
+a warm interpreter (the best of ``--repeat`` runs after one that warms the caches and compiles the
 kernels).
 
 ``--flight``: the same for the trimmed helicopter at ``mu = 0.1`` (``flight_case("forward")``,
 the motion refined as ``certify(..., verify=True)`` refines it; minutes for the numerical
-certificate), the Taylor-model prover both over shells of cubes (``taylor``, its default there)
-and over one cube (``taylor1``, ``shells=False``).
+certificate), the band's proof both over shells of cubes (``band``, its default there) and over
+one cube (``band1``, ``shells=False``).
 
 ``--designed``: the forward C.G.'s designed hover function (a quadratic form,
 :func:`rotorlyap.analysis.proof.prove_designed`): its proved bound and start radius against the
@@ -63,9 +64,9 @@ def _hover(repeat: int) -> None:
     _header()
     for cg in ("forward", "neutral", "backward"):
         cert = certify(BladeParameters.table_i(cg), 0.0, function="quadratic")
-        for method in ("balls", "taylor"):
-            proof, dt = _timed(lambda: prove_blade(cert.lyapunov, cert.bound, method=method), repeat)
-            _row(f"{cg} C.G. hover", method, cert.bound, cert.start_region, proof, dt)
+        for label, kw in (("balls", dict(method="balls")), ("band", dict(level_set=False)), ("level", {})):
+            proof, dt = _timed(lambda: prove_blade(cert.lyapunov, cert.bound, **kw), repeat)
+            _row(f"{cg} C.G. hover", label, cert.bound, cert.start_region, proof, dt)
 
 
 def _flight(repeat: int) -> None:
@@ -82,9 +83,9 @@ def _flight(repeat: int) -> None:
         print(f"(numerical certificate at mu = 0.1: {time.perf_counter() - t:.0f} s)", flush=True)
     finally:
         certify_module.prove_certificate = skip
-    for method, shells in (("balls", None), ("taylor", False), ("taylor", None)):
-        proof, dt = _timed(lambda: prove_blade(cert.lyapunov, cert.bound, method=method, shells=shells), repeat)
-        label = "taylor1" if shells is False else method  # one cube of models / shells (the default)
+    for label, kw in (("balls", dict(method="balls")), ("band1", dict(level_set=False, shells=False)),
+                      ("band", dict(level_set=False)), ("level", {})):
+        proof, dt = _timed(lambda: prove_blade(cert.lyapunov, cert.bound, **kw), repeat)
         _row("trimmed helicopter mu=0.1", label, cert.bound, cert.start_region, proof, dt)
 
 

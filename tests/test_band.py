@@ -1,5 +1,5 @@
-"""Proofs from Taylor models: condition (h) shown by branch and bound over directions
-(rotorlyap.methods.band, rotorlyap.methods.proof.prove_quadratic_models).
+"""Proofs from Taylor models: condition (h), or W' < 0 on a level set, shown by branch and bound
+over directions (rotorlyap.methods.band, rotorlyap.methods.proof.prove_quadratic_models).
 
 Facts checked, on systems whose largest provable bound is known in closed form (a prover that
 proves too much fails them):
@@ -17,7 +17,9 @@ proves too much fails them):
 * the face polynomials reproduce ``W'`` at random points of the band, and the compiled box bounds
   contain a face polynomial's value at the centre and every sampled partial derivative in the box;
 * the blade: every Table I hover proved between 0.8 and 1 of its numerical bound, above the balls'
-  proof, with the float ``W'`` negative on the proved sphere.
+  proof, with the float ``W'`` negative on the proved sphere;
+* ``x' = (x^T F x - 1) x`` with an elongated ``W = x^T S x``: on the level set ``W = c`` the proof
+  reaches its closed-form bound (2.2 times the band's) and never passes it.
 """
 
 from __future__ import annotations
@@ -148,9 +150,10 @@ def test_face_polynomials_reproduce_w_dot_on_the_band():
 
 @pytest.mark.parametrize("cg", ["forward", "neutral", "backward"])
 def test_the_taylor_prover_reaches_most_of_every_table_i_hover_and_never_exceeds_it(cg):
-    """prove_blade (Taylor models, the default) in hover: between 0.8 and 1 of the numerical bound
-    (issue 41's target), the balls' proof below it, and the float W' negative at states sampled on
-    the proved band's outer sphere, where the band comes nearest to W' = 0."""
+    """prove_blade (Taylor models, the default: on the level set) in hover: between 0.8 and 1 of the
+    numerical bound (issue 41's target), the band's proof between 0.8 of it and the level set's,
+    the balls' proof below both; the float W' negative at states sampled on the proved level set,
+    and on the band's outer sphere, where the band comes nearest to W' = 0."""
     from rotorlyap import certify
     from rotorlyap.analysis.proof import prove_blade
     from rotorlyap.model.parameters import BladeParameters
@@ -158,14 +161,18 @@ def test_the_taylor_prover_reaches_most_of_every_table_i_hover_and_never_exceeds
     cert = certify(BladeParameters.table_i(cg), 0.0, function="quadratic")
     fun = cert.lyapunov
     proof = prove_blade(fun, cert.bound)
-    assert proof.proved
-    assert 0.8 * cert.bound <= proof.A <= cert.bound
-    assert prove_blade(fun, cert.bound, method="balls").A < proof.A
+    band = prove_blade(fun, cert.bound, level_set=False)
+    assert proof.proved and band.proved and "level set" in proof.message and "band" in band.message
+    assert 0.8 * cert.bound <= band.A <= proof.A <= cert.bound
+    assert prove_blade(fun, cert.bound, method="balls").A < band.A
     rng = np.random.default_rng(5)
     u = rng.normal(size=(4000, 6))
     u /= np.linalg.norm(u, axis=1)[:, None]
-    x = u * proof.A * fun.scales
+    x = u * band.A * fun.scales
     assert np.all(fun.dW(np.zeros(x.shape[0]), x) < 0)
+    S = fun.solution.P_grid[0]
+    r = np.sqrt(proof.level / np.einsum("mi,ij,mj->m", u, S, u))      # where W = c along each ray
+    assert np.all(fun.dW(np.zeros(u.shape[0]), u * r[:, None] * fun.scales) < 0)
 
 
 def test_the_box_bounds_contain_the_polynomial_and_its_gradient():
@@ -285,3 +292,57 @@ def test_where_no_bound_closes_every_shell_the_search_over_one_cube_follows():
     assert [ok for _, ok in proof.tried[:5]] == [False] * 5
     assert [round(T, 6) for T, _ in proof.tried[:2]] == [10.0, 9.5]
     assert "shells" not in proof.message
+
+
+def _radial_cubic(S: np.ndarray, F: np.ndarray) -> PolynomialSystem:
+    """``x' = (x^T F x - 1) x`` with ``W = x^T S x``: ``W' = 2 (x^T F x - 1) W``. ``K(x) = -I + (phi I
+    + x grad phi^T) / 3`` (the cubic term's averaged Jacobian, as in :func:`_rotated_cubic`)."""
+    n = S.shape[0]
+
+    def K_of(x):
+        Fx = [sum(x[j] * F[i, j] for j in range(n) if F[i, j] != 0.0) for i in range(n)]
+        phi = sum(x[i] * Fx[i] for i in range(n))
+        return [[(x[i] * Fx[j] * 2.0 + (phi if i == j else 0.0)) * (1.0 / 3.0) - (1.0 if i == j else 0.0)
+                 for j in range(n)] for i in range(n)]
+
+    return PolynomialSystem(n, K_of, -np.eye(n), S)
+
+
+def test_the_level_set_proof_reaches_its_closed_form_bound_beyond_the_bands():
+    """``prove_quadratic_models(..., level_set=True)``: ``W' < 0`` on the level set ``W = c`` alone
+    (``c = A^2 min eig S``), which makes ``{W <= c}`` invariant. For ``x' = (x^T F x - 1) x`` with
+    ``W = x^T S x`` (``S`` and ``F`` rotated off the axes), ``W' = 2 (x^T F x - 1) W``:
+
+    * on the level set, ``max x^T F x = c lambda_max(S^-1/2 F S^-1/2)``: the level-set condition
+      holds exactly for ``A < 1 / sqrt(min eig S lambda_max(S^-1/2 F S^-1/2))`` (2.24 here);
+    * on the band ``|x| <= A, W >= c``, which reaches the sphere in every direction, exactly for
+      ``A < 1 / sqrt(lambda_max F)`` (1 here).
+
+    The level-set proof reaches above 0.85 of its own bound and never beyond it; the band proof
+    stays below the band's; asked beyond its bound, the level-set proof of that bound fails."""
+    c, s = np.cos(0.4), np.sin(0.4)
+    Rot = np.array([[c, -s], [s, c]])
+    S = Rot @ np.diag([0.5, 4.5]) @ Rot.T
+    F = Rot @ np.diag([0.2, 1.0]) @ Rot.T
+    system = _radial_cubic(S, F)
+    w, V = np.linalg.eigh(S)
+    root = V @ np.diag(w ** -0.5) @ V.T
+    exact_level = 1.0 / np.sqrt(w[0] * np.linalg.eigvalsh(root @ F @ root)[-1])
+    exact_band = 1.0 / np.sqrt(np.linalg.eigvalsh(F)[-1])
+    assert exact_level > 2.0 * exact_band
+    proof = _prove(system, exact_level, shells=0.8, level_set=True, first_cube=0.9)
+    assert proof.proved and "level set" in proof.message
+    assert 0.85 * exact_level <= proof.A < exact_level
+    band = _prove(system, exact_level, shells=0.8)
+    assert band.proved and band.A < exact_band
+    # asked beyond the closed form: the shells' bounds (1.2 down) fail; the fallback is the band search
+    beyond = _prove(system, 1.2 * exact_level, shells=0.8, level_set=True, refits=2)
+    assert beyond.A < exact_band and "level set" not in beyond.message
+    with pytest.raises(ValueError, match="level_set"):
+        _prove(system, exact_level, level_set=True)
+    from rotorlyap.methods.band import largest_bound
+
+    coef, rem, exps, _ = system.jacobian_models(1, np.ones(2), 3)
+    bp = band_polynomial(*system.quadratic(1), coef, exps, rem, np.zeros(1), 1.0)
+    with pytest.raises(ValueError, match="level_set needs complete"):
+        largest_bound(bp, 1.0, 0.4, level_set=True)

@@ -4,7 +4,7 @@ Facts checked: the nonlinear term starts at the linear part (-1 for Q = I) for a
 grows with the bound, the enclosure above the sampled estimate (an enclosure contains the exact
 term, a sample lies below it); the examples of the method chapters: the oscillator proved inside
 its numerical certificate, the counterexample not proved; the figures are drawn and legible; the
-words the text glues for the sources of the forward-flight proof's remainder.
+printed account of the sources of a forward-flight model's remainder.
 """
 
 from __future__ import annotations
@@ -46,12 +46,10 @@ def test_bound_text_states_round_off_as_a_floor():
     assert proofs._bound_text(3.2e-6) == "< 1e-05"
 
 
-def test_source_facts_name_the_strips_and_their_angles_as_the_text_reads_them():
-    """The words chapter 9 glues for the remainder's sources: innermost strips named so only when
-    they are the innermost, their radii, their angle ranges in signed whole degrees (a true minus),
-    the worst azimuth and the advancing side's largest remainder; the airfoil's stall angles."""
-    from types import SimpleNamespace
-
+def test_remainder_sources_summary_names_the_strips_and_their_angles():
+    """The printed account of where a forward-flight model's remainder comes from
+    (:class:`rotorlyap.analysis.proof.RemainderSources`): the worst azimuth, the strips whose loads
+    carry it with their angle ranges, and the remainder without them."""
     from rotorlyap.analysis.proof import RemainderSources
 
     psi = 2 * np.pi * (np.arange(8) + 0.5) / 8
@@ -60,14 +58,9 @@ def test_source_facts_name_the_strips_and_their_angles_as_the_text_reads_them():
     src = RemainderSources(bound=0.4, psi=psi, remainder=remainder, worst=6, station=np.array([0.15, 0.18, 0.5]),
                            angles=angles, without=np.array([0.045, 0.023, 0.065]), sources=(0, 1),
                            without_sources=0.0037)
-    airfoil = SimpleNamespace(alpha_stall_negative=np.radians(-15.0), stall_blend=np.radians(3.0))
-    f = proofs._source_facts(src, airfoil)
-    assert f["ch10_src_where"] == "the two innermost strips (at 0.15 and 0.18 of the rotor radius)"
-    assert f["ch10_src_angles"] == "from −26° to −17° and from −15° to −9°"
-    assert (f["ch10_src_rem"], f["ch10_src_psi"], f["ch10_src_adv"], f["ch10_src_without"]) == (0.065, 292, 0.004, 0.0037)
-    assert (f["ch10_stall_neg"], f["ch10_stall_blend"]) == ("−15°", "3°")
-    # a single source that is not the innermost strip
+    text = src.summary()
+    assert "psi = 292 deg" in text
+    assert "r/R = 0.15 (angle of attack -26 to -17 deg; without it 0.045)" in text
     one = RemainderSources(bound=0.4, psi=psi, remainder=remainder, worst=6, station=np.array([0.15, 0.18, 0.5]),
                            angles=angles, without=np.array([0.065, 0.065, 0.01]), sources=(2,), without_sources=0.01)
-    assert proofs._source_facts(one, airfoil)["ch10_src_where"] == "the strip (at 0.50 of the rotor radius)"
     assert "from the strips at r/R = 0.50 (angle of attack 2 to 5 deg; without it 0.01)" in one.summary()

@@ -225,6 +225,21 @@ def test_blade_enclosure_rejects_what_it_cannot_enclose():
                                lambda p: np.zeros(np.shape(p) + (6,)) - np.sin(p)[..., None]))
 
 
+def test_prove_blade_rejects_options_that_do_not_go_together():
+    """The level set's proof needs its shells (a fixed level per bound), the Taylor models float
+    balls, and the method is one of two: clear errors, not a silent other proof."""
+    from rotorlyap.analysis.functions import quadratic_function
+    from rotorlyap.analysis.proof import prove_blade
+
+    fun = quadratic_function(Blade(BladeParameters.table_i("forward"), 0.0))
+    with pytest.raises(ValueError, match="level_set needs the proof over shells"):
+        prove_blade(fun, 0.1, shells=False)
+    with pytest.raises(ValueError, match="float balls"):
+        prove_blade(fun, 0.1, arithmetic="arb")
+    with pytest.raises(ValueError, match="method must be"):
+        prove_blade(fun, 0.1, method="sos")
+
+
 # --------------------------------------------------------------------------------------
 # Systems with known answers
 # --------------------------------------------------------------------------------------
@@ -341,15 +356,17 @@ def test_prove_quadratic_rejects_bad_input():
 @pytest.mark.parametrize("cg", ["forward", "neutral", "backward"])
 def test_every_table_i_hover_is_proved_within_its_numerical_certificate(cg):
     """certify(verify=True) of the quadratic function in hover: a proof exists, its bound and start
-    region lie inside the numerical certificate's, and the float W' is negative at 2000 states
-    sampled on the proved band."""
+    region lie inside the numerical certificate's (the start radius up to round-off: both are
+    ``A sqrt(min l / max s)``, the proof's from rigorous eigenvalue bounds), and the float W' is
+    negative at 2000 states sampled on the proved level set ``W = c``."""
     from rotorlyap import certify
 
     cert = certify(BladeParameters.table_i(cg), 0.0, function="quadratic", verify=True)
     assert cert.proved_part.function == "quadratic" and cert.proved_part.proved
     proof = cert.proof
     assert cert.certified and proof.proved
-    assert 0 < proof.A <= cert.bound and 0 < proof.min_lambda0 <= cert.start_region
+    assert 0 < proof.A <= cert.bound and 0 < proof.min_lambda0 <= cert.start_region * (1 + 1e-9)
+    assert "level set" in proof.message
     from rotorlyap.analysis.functions import quadratic_function
 
     q = quadratic_function(Blade(cert.trim.params, 0.0), cert.trim.steady)
@@ -358,10 +375,9 @@ def test_every_table_i_hover_is_proved_within_its_numerical_certificate(cg):
     u /= np.linalg.norm(u, axis=1)[:, None]
     S = q.solution.P_grid[0]
     w_unit = np.einsum("mi,ij,mj->m", u, S, u)
-    r_in = np.sqrt(proof.level / w_unit)  # where W = c along each ray
-    r = r_in + (proof.A - r_in) * rng.uniform(0, 1, r_in.size)
-    ok = r_in < proof.A
-    x = (u * r[:, None] * q.scales)[ok]
+    r_in = np.sqrt(proof.level / w_unit)  # where W = c along each ray: the level set
+    assert np.all(r_in <= proof.A * (1 + 1e-9))
+    x = u * r_in[:, None] * q.scales
     assert np.all(q.dW(np.zeros(x.shape[0]), x) < 0)
 
 
@@ -369,7 +385,7 @@ def test_every_table_i_hover_is_proved_within_its_numerical_certificate(cg):
 def test_a_forward_flight_case_is_proved():
     """The trimmed helicopter at mu = 0.1 (forward C.G., compressible sections, Pitt-Peters):
     certify(verify=True) refines the periodic motion by shooting and proves the certificate, and the
-    float W' is negative on the proved band."""
+    float W' is negative on the proved level set."""
     from rotorlyap import certify
 
     from rotorlyap.analysis.functions import quadratic_function
@@ -380,7 +396,7 @@ def test_a_forward_flight_case_is_proved():
     assert cert.certified and proof.proved
     assert 0 < proof.A <= cert.bound
     assert proof.n_intervals == 4096
-    # the float W' is negative at 4000 states sampled on the proved band, at random azimuths
+    # the float W' is negative at 4000 states sampled on the proved level set W = c, at random azimuths
     blade = Blade(cert.trim.params, 0.1)
     motion = refine_motion(blade, cert.trim.motion)
     q = quadratic_function(blade, motion.steady)
@@ -390,11 +406,9 @@ def test_a_forward_flight_case_is_proved():
     u /= np.linalg.norm(u, axis=1)[:, None]
     w_unit = q.W(psi, u * q.scales)
     r_in = np.sqrt(proof.level / w_unit)
-    ok = r_in < proof.A
-    r = r_in + (proof.A - r_in) * rng.uniform(0, 1, psi.size)
-    x = (u * r[:, None] * q.scales)[ok]
-    assert ok.sum() > 1000
-    assert np.all(q.dW(psi[ok], x) < 0)
+    assert np.all(r_in <= proof.A * (1 + 1e-9))
+    x = u * r_in[:, None] * q.scales
+    assert np.all(q.dW(psi, x) < 0)
     # what limits it (chapter 9's account, on 16 model intervals to keep the test short): the
     # models' remainder over the cube of the proved bound is largest on the retreating side, it
     # comes from the innermost strips, whose angle of attack there reaches past the airfoil's

@@ -339,7 +339,8 @@ def test_forward_flight_models_contain_the_sampled_equations_and_are_tighter_tha
     tabulated periodic motion, the azimuth a seventh model variable on 16 intervals: the models
     contain the float right-hand side and Jacobian at random azimuths and states of the boxes
     ``|y_i| <= 0.1``, and the Jacobian's enclosure is over 50 times narrower than the balls'; on 8
-    coarser intervals (the steady motion's hull over two pieces) they contain them too."""
+    coarser intervals (the steady motion's hull over two pieces) they contain them too; without the
+    Jacobian (``jacobian=False``) the value models are the same."""
     from rotorlyap.analysis.enclosure import BladeEnclosure
     from rotorlyap.analysis.taylor_enclosure import taylor_evaluate
     from rotorlyap.conventions import DEFAULT_SCALES
@@ -377,6 +378,10 @@ def test_forward_flight_models_contain_the_sampled_equations_and_are_tighter_tha
     assert np.all((clo[k // 2] - slack <= J) & (J <= chi[k // 2] + slack))
     vlo, vhi = coarse.value.bounds()
     assert np.all((vlo[k // 2] - 1e-12 * scale <= value) & (value <= vhi[k // 2] + 1e-12 * scale))
+    # without the Jacobian (the compressible sections' kinks taken on values alone): the same value models
+    bare = taylor_evaluate(enc, np.zeros(6), radius, 2, n_intervals=n, jacobian=False)
+    assert bare.jacobian is None
+    assert np.array_equal(bare.value.coef, ev.value.coef) and np.array_equal(bare.value.rem, ev.value.rem)
 
 
 @pytest.mark.parametrize("centre", [-0.3, -0.02, 0.0, 0.05, 0.4])

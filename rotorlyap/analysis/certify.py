@@ -424,7 +424,7 @@ def certify(params: BladeParameters, mu: float = 0.0, *, condition: str = "propu
 
 
 #: The provers :func:`prove_certificate` names.
-_METHODS = {"quadratic": "Taylor models and branch and bound (prove_blade)",
+_METHODS = {"quadratic": "Taylor models and branch and bound on the level set (prove_blade)",
             "designed": "Taylor models and branch and bound on a level set (prove_designed_level)"}
 
 def prove_certificate(fun, family: str, bound: float, start_region: float, certified: bool, *,

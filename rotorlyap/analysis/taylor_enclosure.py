@@ -231,13 +231,18 @@ def _tm_table(enc: BladeEnclosure, alpha: Jet) -> tuple[Jet, Jet, Jet]:
 
 
 def _tm_select(mask, a: Jet, b: Jet, n: int) -> Jet:
-    """Elementwise ``a`` where ``mask`` (per box) else ``b``, for Jets of models."""
+    """Elementwise ``a`` where ``mask`` (per box) else ``b``, for Jets of models (the values alone
+    where neither has a gradient: ``taylor_evaluate(..., jacobian=False)``)."""
+    if a.d is None and b.d is None:
+        return Jet(tm.where(mask, a.v, b.v))
     return Jet(tm.where(mask, a.v, b.v), tm.where(mask, a.gradient(n), b.gradient(n)))
 
 
 def _constant_jet(value, like: Jet, n: int) -> Jet:
     """The constant ``value`` (float or balls) as a Jet of the models of ``like`` (zero gradient)."""
     sp, shape = like.v.space, like.v.shape
+    if like.d is None:
+        return Jet(TaylorModel.constant(value, sp, shape))
     return Jet(TaylorModel.constant(value, sp, shape), TaylorModel.constant(np.zeros((n,) + shape), sp))
 
 

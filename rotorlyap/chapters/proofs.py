@@ -21,8 +21,7 @@ import numpy as np
 
 from ..analysis.certify import Certificate, certify
 from ..analysis.functions import quadratic_function
-from ..analysis.proof import (FLIGHT_FIRST_CUBE, FLIGHT_SHELLS, RemainderSources, proof_problem, prove_blade,
-                              remainder_sources)
+from ..analysis.proof import FLIGHT_SHELLS, proof_problem, prove_blade
 from ..conventions import DEFAULT_SCALES
 from ..methods.proof import SHELL_CORE, Proof, nonlinear_bounds
 from ..model.blade import Blade
@@ -77,12 +76,16 @@ class ProofRow:
     balls : Proof, optional
         The same function proved by ball arithmetic alone (``method="balls"``, the mean-value
         form over the tube), for comparison.
+    band : Proof, optional
+        The same function proved on the whole band of the theorem's condition (h)
+        (``level_set=False``), for comparison (hover).
     """
 
     key: str
     label: str
     certificate: Certificate
     balls: Proof | None = None
+    band: Proof | None = None
 
     @property
     def numerical(self) -> tuple[float, float]:
@@ -108,6 +111,13 @@ class ProofRow:
         return self.balls.min_lambda0 / self.numerical[1]
 
     @property
+    def band_ratio(self) -> float:
+        """The band proof's smallest start radius over the numerical one (NaN without)."""
+        if self.band is None or not self.numerical[1] > 0:
+            return float("nan")
+        return self.band.min_lambda0 / self.numerical[1]
+
+    @property
     def residual_text(self) -> str:
         """The steady motion's residual term as a bound (:func:`_bound_text`; in forward flight above
         :data:`SHOOTING_NOISE`)."""
@@ -130,23 +140,22 @@ class ProofTable:
         The flight case: largest residual ``|h(psi, xi) - xi'|`` in the scaled norm of the Fourier
         collocation's periodic motion (tabulated), at 4096 azimuths between its grid points, before
         the shooting refines it (NaN without a flight case).
-    sources : RemainderSources or None
-        The flight case: where the Taylor models' remainder over the cube of the proved bound comes
-        from (:func:`rotorlyap.analysis.proof.remainder_sources`; None without a proved flight case).
     """
 
     rows: tuple[ProofRow, ...]
     collocation_residual: float = float("nan")
-    sources: RemainderSources | None = None
 
     def markdown(self) -> str:
-        """The table: bound and start radius, numerical and proved, and their ratio."""
+        """The table: bound and start radius, numerical and proved, their ratio, and the ratio the
+        band's proof reaches (a dash where it is not run)."""
         head = ("| case | numerical $A$ | numerical $\\lambda_0$ | proved $A$ | proved $\\lambda_0$ "
-                "| proved / numerical $\\lambda_0$ |\n|---|---|---|---|---|---|")
+                "| proved / numerical $\\lambda_0$ | on the band: proved / numerical $\\lambda_0$ |"
+                "\n|---|---|---|---|---|---|---|")
         lines = [head]
         for r in self.rows:
             (na, nl), (pa, pl) = r.numerical, r.proved
-            lines.append(f"| {r.label} | {na:.3g} | {nl:.3g} | {pa:.3g} | {pl:.3g} | {r.ratio:.3f} |")
+            band = "–" if r.band is None else f"{r.band_ratio:.3f}"
+            lines.append(f"| {r.label} | {na:.3g} | {nl:.3g} | {pa:.3g} | {pl:.3g} | {r.ratio:.3f} | {band} |")
         return "\n".join(lines)
 
     def summary(self) -> str:
@@ -158,11 +167,12 @@ class ProofTable:
                        f"lambda0 {pl:.3g}; ratio {r.ratio:.3f}; {r.certificate.proof.n_intervals} intervals")
             out.append(f"    terms at the proved bound: linear <= {r.term('linear'):.3f}, "
                        f"Taylor-model remainder <= {r.term('deviation'):.2g}, |S g0| {r.residual_text}")
+            if r.band is not None:
+                out.append(f"    on the whole band (condition (h)): A {r.band.A:.3g}, lambda0 "
+                           f"{r.band.min_lambda0:.3g}; ratio {r.band_ratio:.3f}")
             if r.balls is not None:
                 out.append(f"    ball arithmetic alone (mean-value form): A {r.balls.A:.3g}, lambda0 "
                            f"{r.balls.min_lambda0:.3g}; ratio {r.balls_ratio:.3f}")
-            if r.certificate.mu > 0 and self.sources is not None:
-                out.extend("    " + line for line in self.sources.summary().splitlines())
         return "\n".join(out)
 
     def facts(self) -> dict:
@@ -174,11 +184,11 @@ class ProofTable:
         flight case's ``ch10_flight_mu`` and ``ch10_flight_n``; the settings the text quotes: the
         numerical certificates' azimuths ``ch10_n_psi``, the Taylor models' order
         ``ch10_taylor_order`` (:func:`rotorlyap.analysis.proof.prove_blade`'s default) and the
-        step of chapter 8's advance-ratio grid ``ch10_mu_step``; the forward-flight proof's shells
-        (``ch10_shell_ratio``, ``ch10_shell_core``, ``ch10_first_target``: the settings of
-        :func:`rotorlyap.analysis.proof.prove_blade` in forward flight) and its proved bound as a
-        fraction of the numerical one, ``ch10_flight_Afrac`` (2 decimals); with :attr:`sources`,
-        where the models' remainder comes from (:func:`_source_facts`)."""
+        step of chapter 8's advance-ratio grid ``ch10_mu_step``; the proof's shells
+        (``ch10_shell_ratio``, ``ch10_shell_core``: the settings of
+        :func:`rotorlyap.analysis.proof.prove_blade` on the level set) and the flight case's proved
+        bound as a fraction of the numerical one, ``ch10_flight_Afrac`` (2 decimals); where the band's
+        proofs ran, ``ch10_<key>_band_ratio`` and over the hovers ``ch10_band_ratio_lo``/``_hi``."""
         import inspect
 
         from .scans import MU_FORENSIC
@@ -200,7 +210,12 @@ class ProofTable:
                       f"ch10_{key}_res": r.residual_text})
             if r.balls is not None:
                 f[f"ch10_{key}_balls_ratio"] = Rounded(r.balls_ratio, 3)
+            if r.band is not None:
+                f[f"ch10_{key}_band_ratio"] = Rounded(r.band_ratio, 3)
         hover = [r for r in self.rows if r.certificate.mu == 0]
+        if hover and all(r.band is not None for r in hover):
+            f["ch10_band_ratio_lo"] = Rounded(min(r.band_ratio for r in hover), 3)
+            f["ch10_band_ratio_hi"] = Rounded(max(r.band_ratio for r in hover), 3)
         if all(r.balls is not None for r in hover):
             f["ch10_balls_ratio_lo"] = Rounded(min(r.balls_ratio for r in hover), 3)
             f["ch10_balls_ratio_hi"] = Rounded(max(r.balls_ratio for r in hover), 3)
@@ -215,13 +230,10 @@ class ProofTable:
             k = int(np.argmax(proof.terms["nonlinear"]))
             f["ch10_flight_tight"] = round(float(np.degrees(proof.psi[k] + np.pi / proof.n_intervals)))
             f["ch10_colloc_res"] = float(f"{self.collocation_residual:.1g}")
-            # the proof over shells of cubes (prove_blade's forward-flight defaults)
+            # the proof over shells of cubes (prove_blade's defaults on the level set)
             f["ch10_shell_ratio"] = FLIGHT_SHELLS
             f["ch10_shell_core"] = SHELL_CORE
-            f["ch10_first_target"] = FLIGHT_FIRST_CUBE
             f["ch10_flight_Afrac"] = float(f"{proof.A / flight[0].numerical[0]:.2f}")
-            if self.sources is not None:
-                f.update(_source_facts(self.sources, flight[0].certificate.trim.params.airfoil))
         return f
 
     def export(self) -> dict:
@@ -239,56 +251,30 @@ class ProofTable:
         }
 
 
-_COUNT_WORDS = {1: "the", 2: "the two", 3: "the three", 4: "the four"}
-
-
-def _source_facts(src: RemainderSources, airfoil) -> dict:
-    """``ch10_src_{rem,psi,adv,where,angles,without}`` (2 significant digits, whole deg, words) and
-    ``ch10_stall_neg``, ``ch10_stall_blend`` (the airfoil's negative stall angle and stall blend,
-    whole deg with the sign, as text): the text's account of where the forward-flight proof's remainder
-    comes from."""
-    k = src.worst
-    adv = src.psi < np.pi
-    strips = src.sources
-    where = ""
-    if strips:
-        inner = strips == tuple(range(len(strips)))
-        count = _COUNT_WORDS.get(len(strips), f"the {len(strips)}")
-        noun = "strip" if len(strips) == 1 else "strips"
-        radii = " and ".join(f"{src.station[i]:.2f}" for i in strips)
-        where = f"{count} {'innermost ' if inner else ''}{noun} (at {radii} of the rotor radius)"
-    angles = " and ".join(f"from {degrees(src.angles[i, 0])} to {degrees(src.angles[i, 1])}" for i in strips)
-    return {"ch10_src_rem": float(f"{src.remainder[k]:.2g}"),
-            "ch10_src_psi": round(float(np.degrees(src.psi[k]))),
-            "ch10_src_adv": float(f"{src.remainder[adv].max():.2g}") if adv.any() else float("nan"),
-            "ch10_src_where": where, "ch10_src_angles": angles,
-            "ch10_src_without": float(f"{src.without_sources:.2g}"),
-            "ch10_stall_neg": degrees(airfoil.alpha_stall_negative), "ch10_stall_blend": degrees(airfoil.stall_blend)}
-
-
 def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
     """:func:`rotorlyap.certify` of the quadratic function with ``verify=True`` for each hover case
     (Table I, hover trim) and the forward-flight case (``None`` to skip it): the trimmed helicopter
     of chapter 8."""
-    def row(key, label, cert):
+    def row(key, label, cert, band: bool = False):
         balls = prove_blade(cert.lyapunov, cert.bound, method="balls") if cert.certified else None
-        return ProofRow(key, label, cert, balls)
+        on_band = prove_blade(cert.lyapunov, cert.bound, level_set=False) if cert.certified and band else None
+        return ProofRow(key, label, cert, balls, on_band)
 
     # the quadratic function by name: this chapter proves it (verify=True proves the function
     # certify returns, by default the augmented energy where it certifies more: chapter 10)
+    # in hover also the band's proof (condition (h) on the whole band), about a second each; in
+    # forward flight it takes as long as the level set's (the docstring of
+    # rotorlyap.analysis.proof.FLIGHT_FIRST_CUBE measures it), so the chapter does not run it
     rows = [row(cg, f"{cg} C.G., hover", certify(BladeParameters.table_i(cg), 0.0, function="quadratic",
-                                                 verify=True))
+                                                 verify=True), band=True)
             for cg in hover_cases]
     residual = float("nan")
-    sources = None
     if flight is not None:
         cg, mu = flight
         cert = certify(BladeParameters.flight_case(cg), float(mu), function="quadratic", verify=True)
         rows.append(row("flight", f"{cg} C.G., mu = {mu:g}, trimmed", cert))
         residual = _collocation_residual(cert)
-        if cert.proof is not None and cert.proof.proved:
-            sources = remainder_sources(cert.lyapunov, cert.proof.A)
-    return ProofTable(tuple(rows), residual, sources)
+    return ProofTable(tuple(rows), residual)
 
 
 def _collocation_residual(cert: Certificate, n: int = 4096) -> float:
@@ -454,7 +440,7 @@ def figure_flight_proof(row: ProofRow, figsize=(6.6, 5.6)):
     ax1.legend(fontsize=8.5, loc="lower center", ncol=2)
     ax2.plot(psi_p, proof.terms["linear"], "-", color="0.5", lw=1, label="linear part (tube radius 0)")
     ax2.plot(psi_p, proof.terms["nonlinear"], "-", color="k", lw=1,
-             label="polynomial part at the proved bound (estimate)")
+             label="polynomial part on the level set (estimate)")
     ax2.axhline(0.0, color="k", lw=0.8)
     lo = min(float(np.min(proof.terms["linear"])), float(np.min(proof.terms["nonlinear"])))
     ax2.set(xlabel=r"azimuth $\psi$ (deg)", ylabel=r"largest $W' / |y|^2$ (per rev)", xlim=(0, 360),

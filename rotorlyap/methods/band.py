@@ -47,6 +47,14 @@ polynomial part that is not negative (the models cannot show the condition there
 boxes it drops below the nearest open box. At the end every point of the band lies in a closed box:
 ``W' < 0`` there, for the model as the Taylor models enclose it (every step rigorous).
 
+With ``level_set`` the search covers the level set ``W = c`` alone (within ``|y| <= A``): each box's
+``sigma`` range is cut also to ``sigma_hi = sqrt(c / (A_c^2 min v^T S v))``, the quadratic part is
+bounded by ``v^T N0 v`` over the box as well (``N0 = S' + C_0^T S + S C_0``, ``n0`` the bound of
+its largest eigenvalue: in the directions where ``S`` is large, where the level set comes near
+the origin, ``v^T N0 v`` is far below ``n0 |v|^2``), and a box is cut along a coordinate of ``v``
+(its ``sigma`` range shrinks with it). That ``W' < 0`` on the level set makes ``{W <= c}``
+invariant (:func:`rotorlyap.methods.proof.prove_quadratic_models`).
+
 Vectorised over azimuth intervals (one polynomial and one ``S`` per interval: ``S`` may be
 balls, ``p``'s coefficients are balls) and faces: every box carries its interval and face.
 """
@@ -89,6 +97,10 @@ class BandPolynomial:
         Upper bounds of ``|S g0|`` (scaled coordinates).
     cube : float
         ``A_c``, the half-width of the models' cube (scaled norm).
+    N0 : Balls, shape (N, n, n), optional
+        The quadratic part's matrix over each interval (``v^T N0 v`` bounds it per box of ``v``: the
+        search on the level set, where ``n0 |v|^2`` is too coarse in the directions where ``S`` is
+        large); None: ``n0`` alone.
     """
 
     n: int
@@ -99,6 +111,7 @@ class BandPolynomial:
     R: np.ndarray
     residual: np.ndarray
     cube: float
+    N0: Balls | None = None
 
 
 @dataclass(frozen=True)
@@ -129,7 +142,7 @@ def _monomial_index(exps: np.ndarray) -> dict:
 
 def band_polynomial(S: Balls, dS: Balls, coef: Balls, K_exponents: np.ndarray, R: np.ndarray,
                     residual: np.ndarray, cube: float, n0: np.ndarray | None = None,
-                    keep: int | None = 2) -> BandPolynomial:
+                    keep: int | None = 2, N0: Balls | None = None) -> BandPolynomial:
     """The face polynomials ``F`` of ``W'`` from the averaged Jacobian's models.
 
     Parameters
@@ -155,6 +168,10 @@ def band_polynomial(S: Balls, dS: Balls, coef: Balls, K_exponents: np.ndarray, R
         Upper bounds of ``lambda_max`` of the quadratic part, given (for example from the
         Jacobian at the steady motion on finer intervals, ``R`` then covering ``K - J0``'s
         departure from the models' non-constant terms); default: from ``S'`` and ``C_0``.
+    N0 : Balls, shape (N, n, n), optional
+        With ``n0``: balls of the quadratic part's matrix whose ``lambda_max`` ``n0`` bounds
+        (:attr:`BandPolynomial.N0`); default: ``S' + C_0^T S + S C_0`` where ``n0`` is not given,
+        else None.
 
     Returns
     -------
@@ -198,8 +215,9 @@ def band_polynomial(S: Balls, dS: Balls, coef: Balls, K_exponents: np.ndarray, R
     if n0 is None:
         C0 = coef[:, int(np.flatnonzero(~nonconstant)[0])]
         SC0 = fb.matmul(S, C0)
+        N0 = dS + SC0 + SC0.swapaxes(-1, -2)
         with iv.arithmetic("balls"):
-            _, n0 = iv.symmetric_eigenvalue_bounds(dS + SC0 + SC0.swapaxes(-1, -2))
+            _, n0 = iv.symmetric_eigenvalue_bounds(N0)
     # faces: v_i = s; exponent of F: (beta without i, |beta| - 3), coefficient p_beta s^beta_i
     deg = p_exps.sum(axis=1)
     f_exps = None
@@ -219,7 +237,8 @@ def band_polynomial(S: Balls, dS: Balls, coef: Balls, K_exponents: np.ndarray, R
             cr[:, face, order] = p.rad
     return BandPolynomial(n=n, exponents=f_exps, coef=Balls(cm, cr), n0=np.asarray(n0, dtype=float), S=S,
                           R=np.asarray(R, dtype=float),
-                          residual=np.asarray(residual, dtype=float).reshape(N), cube=float(cube))
+                          residual=np.asarray(residual, dtype=float).reshape(N), cube=float(cube),
+                          N0=None if N0 is None else fb.as_balls(N0))
 
 
 def _exponents_of_degree(n: int, d: int) -> list:
@@ -496,9 +515,11 @@ def _full_v(face: np.ndarray, lo: np.ndarray, hi: np.ndarray, n: int):
 
 
 def _sigma_range(bp: BandPolynomial, k: np.ndarray, vc: np.ndarray, vw: np.ndarray,
-                 rho: Balls, level: Balls):
+                 rho: Balls, level: Balls, level_set: bool = False):
     """Floats ``lo <= sigma_lo(v)`` and ``hi >= sigma_hi(v)`` over the boxes of ``v`` (full
-    vectors (B, n), the fixed coordinate exact), and magnitudes of ``v`` and ``S v``."""
+    vectors (B, n), the fixed coordinate exact), and magnitudes of ``v`` and ``S v``. With
+    ``level_set``, ``sigma_hi`` also at most ``sqrt(level / min v^T S v)``: the level set
+    ``W = level`` instead of the band ``W >= level``."""
     v = Balls(vc, vw)
     S = bp.S[k]                                                     # (B, n, n)
     Sv = (S * Balls._new(v.mid[:, None, :], v.rad[:, None, :])).sum(axis=-1)
@@ -509,13 +530,18 @@ def _sigma_range(bp: BandPolynomial, k: np.ndarray, vc: np.ndarray, vw: np.ndarr
         hi = (rho / Balls(np.maximum(norm2_lo, 1.0)).sqrt()).upper()  # |v| >= 1 on every face
         top = np.maximum(vSv.upper(), 0.0)
         lo = (level / Balls(top)).sqrt().lower()
+        if level_set:
+            bottom = vSv.lower()
+            cap = (level / Balls(np.where(bottom > 0, bottom, 1.0))).sqrt().upper()
+            hi = np.where(bottom > 0, np.minimum(hi, cap), hi)
     lo = np.where(np.isfinite(lo) & (top > 0), np.maximum(lo, 0.0), 0.0)
     return lo, hi, v.magnitude(), Sv.magnitude(), norm2_lo
 
 
 def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: int = 200_000,
                   patience: int = 50_000, steps=STEPS, batch: int = 8192, initial_split: int = 1,
-                  reserve: float = 0.25, sigma_floor: float = 0.0, complete: bool = False) -> BandResult:
+                  reserve: float = 0.25, sigma_floor: float = 0.0, complete: bool = False,
+                  level_set: bool = False) -> BandResult:
     """The largest bound ``A <= A_max`` for which ``W' < 0`` is shown on ``|y| <= A, W(y) >= level``.
 
     Branch and bound (module docstring), breadth first, ``batch`` boxes at a time (each step costs
@@ -562,6 +588,9 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         True: show ``W' < 0`` on all of ``|y| <= A_max`` (within the cube and above the floor) or
         nothing: the search stops with ``A = 0`` where the bound would step down (a box centre
         where the polynomial part is not negative, ``patience``, ``max_boxes``).
+    level_set : bool
+        Only the points where ``W = level`` (module docstring), with ``complete``: ``W' < 0`` on
+        the level set within ``|y| <= A_max``, or nothing.
 
     Returns
     -------
@@ -576,6 +605,8 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         raise ValueError(f"sigma_floor must lie in [0, 1), got {sigma_floor!r}")
     if not (level > 0):
         raise ValueError(f"level must be > 0, got {level!r}")
+    if level_set and not complete:
+        raise ValueError("level_set needs complete=True (a fixed level: the bound cannot step down)")
     ev = _Evaluator(bp)
     m = n  # n - 1 free coordinates and sigma
     level_t = Balls(float(level)) / (Balls(bp.cube) * Balls(bp.cube))
@@ -623,7 +654,7 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         if np.any(fresh):
             idx = np.flatnonzero(fresh)
             vc, vw = _full_v(face[idx], lo[idx], hi[idx], n)
-            s_lo, s_hi, _, _, norm2_lo = _sigma_range(bp, k[idx], vc, vw, Balls(rho), level_t)
+            s_lo, s_hi, _, _, norm2_lo = _sigma_range(bp, k[idx], vc, vw, Balls(rho), level_t, level_set)
             # sigma cut to the band; boxes without band points dropped
             lo[idx, -1] = np.maximum(lo[idx, -1], s_lo)
             hi[idx, -1] = np.minimum(hi[idx, -1], s_hi)
@@ -672,6 +703,12 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         v2 = np.where(n0 < 0, Balls(mig * mig).sum(axis=-1).lower(), Balls(v_mag * v_mag).sum(axis=-1).upper())
         # the remainder's term 2 sum_jk |S v|_j R_jk |v_k| and the residual's 2 e |v| / (A_c sigma_lo)
         quad = Balls(n0) * Balls(v2)
+        if level_set and bp.N0 is not None:
+            # on the level set: v^T N0 v over the box of v as well (the smaller upper bound)
+            v = Balls(vc, vw)
+            N0 = Balls._new(bp.N0.mid[k], bp.N0.rad[k])
+            vNv = (v * (N0 * Balls._new(v.mid[:, None, :], v.rad[:, None, :])).sum(axis=-1)).sum(axis=-1)
+            quad = Balls(np.minimum(quad.upper(), vNv.upper()))
         rterm = (Balls(Sv_mag[:, :, None]) * Balls(R[k]) * Balls(v_mag[:, None, :])).sum(axis=(1, 2)) * 2.0
         eterm = None
         if np.any(res[k] > 0):
@@ -717,7 +754,8 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
         in_band = (r_c <= rho) & (xc[:, -1] ** 2 * np.einsum("bi,bij,bj->b", vc, bp.S.mid[k], vc) >= float(level_t.mid))
         if np.any(in_band):
             np.maximum.at(estimate, k[in_band], point[in_band])
-        bad = in_band & (point >= 0)
+        # (on the level set alone a centre of the band may have W' >= 0 and the proof still hold)
+        bad = in_band & (point >= 0) & (not level_set)
         if complete and (np.any(bad) or count - since > patience):
             rho, stop = 0.0, ("the polynomial part is not negative at a box centre in the band" if np.any(bad)
                               else f"not closed after {count} boxes")
@@ -757,7 +795,12 @@ def largest_bound(bp: BandPolynomial, A_max: float, level: float, *, max_boxes: 
             rho = min(rho, float(np.nextafter(np.min(rmin_b), -np.inf)))
             open_ &= ~tiny
         k, face, lo, hi, share = k[open_], face[open_], lo[open_], hi[open_], share[open_]
-        # split each open box at the middle of the coordinate with the largest share
+        # split each open box at the middle of the coordinate with the largest share; on the level
+        # set a coordinate of v (the box's sigma range, cut to the level set, shrinks with it;
+        # cutting sigma alone would leave points off the level set in every part)
+        if level_set and n > 1:
+            share = share.copy()
+            share[:, -1] = -np.inf
         if k.size:
             dim = np.argmax(share, axis=1)
             rows = np.arange(k.size)

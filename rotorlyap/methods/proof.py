@@ -197,7 +197,8 @@ class _Base:
         g0, self.blocked = system.residual(N)
         self.J0y = _scaled_matrix(iv.asballs(system.linear(N)), a)
         g0y = iv.asballs(g0) / a[None, :]
-        _, self.m_hi = iv.symmetric_eigenvalue_bounds(self.dS + _quadratic_form_matrix(self.S, self.J0y))
+        self.N0 = self.dS + _quadratic_form_matrix(self.S, self.J0y)      # the linear part's matrix
+        _, self.m_hi = iv.symmetric_eigenvalue_bounds(self.N0)
         self.e = iv.norm_upper(iv.matmul(self.S, g0y[:, :, None])[:, :, 0])  # |S g0|
 
     def nonlinear(self, bound: float):
@@ -224,7 +225,8 @@ def _level_and_radii(bound: float, s_min: float, s_hi: np.ndarray) -> tuple[floa
 
 
 def _prove_by_shells(models, first: float, ratio: float, A: float, s_min: float, s_hi, terms: dict, psi,
-                     blocked0: dict, N: int, group: int, order: int, max_boxes: int, tries: int):
+                     blocked0: dict, N: int, group: int, order: int, max_boxes: int, tries: int,
+                     level_set: bool = False):
     """:func:`prove_quadratic_models` over shells of cubes (its ``shells``): the largest of the first
     ``tries`` bounds ``first`` times :data:`rotorlyap.methods.band.STEPS` whose every cube's search
     closes. Returns ``(proof or None, the bounds tried)``."""
@@ -246,7 +248,7 @@ def _prove_by_shells(models, first: float, ratio: float, A: float, s_min: float,
             # the cube's shell: max |y_i| from the next cube's (a little below it) up to this cube
             floor = 0.0 if j == len(cubes) - 1 else float(np.nextafter(cubes[j + 1] / cube * (1 - 1e-12), 0.0))
             res = largest_bound(bp, T, level, max_boxes=max_boxes, patience=max_boxes, sigma_floor=floor,
-                                complete=True)
+                                complete=True, level_set=level_set)
             boxes += res.boxes
             if not res.A > 0:
                 ok = False
@@ -255,9 +257,11 @@ def _prove_by_shells(models, first: float, ratio: float, A: float, s_min: float,
             estimate = np.maximum(estimate, np.repeat(res.estimate, group))
         tried.append((T, ok))
         if ok:
-            message = (f"proved: W' < 0 on the band |y| <= A = {T:.4g}, W >= c over the whole period ({N} azimuth "
-                       f"intervals; Taylor models of order {order} over {len(cubes)} shells of cubes, branch and "
-                       f"bound over directions and radii: {boxes} boxes)")
+            where = (f"the level set W = c over the whole period, so that {{W <= c}} (within |y| <= A = {T:.4g}) "
+                     "is invariant" if level_set else
+                     f"the band |y| <= A = {T:.4g}, W >= c over the whole period")
+            message = (f"proved: W' < 0 on {where} ({N} azimuth intervals; Taylor models of order {order} over "
+                       f"{len(cubes)} shells of cubes, branch and bound over directions and radii: {boxes} boxes)")
             proof = Proof(proved=True, A=float(T), A_requested=A, level=level, psi=psi, lambda0=radii, n_intervals=N,
                           terms={**terms, "deviation": deviation, "nonlinear": estimate}, tried=tuple(tried),
                           message=message)
@@ -415,7 +419,7 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
                            n_intervals: int = 1, period: float = 2 * np.pi, order: int = 3,
                            n_models: int | None = None, max_boxes: int = 200_000, patience: int = 50_000,
                            floor: float = 0.25, refits: int = 4, first_cube: float = 1.0,
-                           shells: float | None = None) -> Proof:
+                           shells: float | None = None, level_set: bool = False) -> Proof:
     """Prove condition (h) for ``W = y^T S y`` from Taylor models of the averaged Jacobian, and find
     the largest bound that holds.
 
@@ -473,6 +477,16 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
     first_cube : float
         The first cube of the models, as a fraction of ``A`` (the bound proved is at most the
         largest cube tried); with ``shells``, the first bound tried.
+    level_set : bool
+        Show ``W' < 0`` on the level set ``W = c`` of each bound tried, not on the whole band
+        (with ``shells`` only: the level is fixed per bound). The set ``{W <= c}`` is then invariant
+        (where ``W = c``, ``W`` decreases; ``W`` is positive definite, so the set is the closed
+        ellipsoid about the steady motion at every azimuth), and it holds the ball of the start
+        radius and lies in the ball of the bound: the same certificate, from a condition that asks
+        less than (h) (the band reaches the sphere ``|y| = A`` in every direction, the level set
+        only where ``S`` is smallest). :func:`rotorlyap.methods.band.largest_bound` cuts each box's
+        radius range to the level set and bounds the linear part per box of directions. Where no
+        bound closes every shell, the search over one cube that follows is the band's.
     shells : float, optional
         The proof over shells of cubes (None, the default: one cube at a time, above). A bound
         ``T`` is proved with models over the cubes ``c_0 = T``, ``c_j = shells^j T`` down to the
@@ -511,6 +525,14 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
     if Nc < 1 or N % Nc:
         raise ValueError(f"n_models ({n_models!r}) must divide n_intervals ({N})")
     group = N // Nc
+    N0_c = None
+    if Nc != N:
+        # the linear part's matrix over each coarse interval: the hull of the fine intervals' balls
+        N0 = fb.as_balls(base.N0)
+        lo = N0.lower().reshape((Nc, group) + N0.shape[1:]).min(axis=1)
+        hi = N0.upper().reshape((Nc, group) + N0.shape[1:]).max(axis=1)
+        mid = 0.5 * (lo + hi)
+        N0_c = fb.Balls(mid, np.nextafter(np.nextafter(np.maximum(hi - mid, mid - lo), np.inf), np.inf))
 
     def models(cube: float):
         """The band polynomial from the models over the cube of ``cube``, the blocked intervals,
@@ -532,7 +554,7 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
                 n0 = np.max(m_hi.reshape(Nc, group), axis=1)
                 e_c = np.max(e.reshape(Nc, group), axis=1)
                 bp = band_polynomial(fb.as_balls(S_c), fb.as_balls(dS_c), coef_y, exps,
-                                     fb.Balls(rem_y * 2.0).upper(), e_c, cube, n0=n0)
+                                     fb.Balls(rem_y * 2.0).upper(), e_c, cube, n0=n0, N0=N0_c)
         deviation = np.repeat(np.max(np.where(np.isfinite(rem_y), rem_y, np.inf), axis=(1, 2)), group)
         return bp, blocked, finite, deviation
 
@@ -540,13 +562,15 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         raise ValueError(f"first_cube must lie in (0, 1], got {first_cube!r}")
     if shells is not None and not 0 < shells < 1:
         raise ValueError(f"shells must lie in (0, 1), got {shells!r}")
+    if level_set and shells is None:
+        raise ValueError("level_set needs shells (a fixed level per bound tried); got shells=None")
     terms = {"linear": m_hi, "deviation": np.full(N, np.nan), "residual": e, "s_max": s_hi, "s_min": s_lo,
              "nonlinear": np.full(N, np.nan)}
     base_ok = bool(s_min > 0 and np.all(m_hi < 0) and not _reasons(blocked0, psi))
     tried = []
     if shells is not None and base_ok:
         proof, tried = _prove_by_shells(models, A * first_cube, float(shells), A, s_min, s_hi, terms, psi, blocked0,
-                                        N, group, order, max_boxes, refits + 1)
+                                        N, group, order, max_boxes, refits + 1, level_set)
         if proof is not None:
             return proof
         # none of the bounds tried closed every shell: the search over one cube
