@@ -41,6 +41,11 @@ def test_the_examples_of_the_method_chapters():
     assert ex.summary().splitlines()[1] == "counterexample of chapter 2: not proved"  # not "proved False"
 
 
+def test_range_text_gives_one_value_where_the_ends_round_alike():
+    assert proofs._range_text([0.9, 0.95, 0.9001]) == "0.900 to 0.950"
+    assert proofs._range_text([1.0000000000223, 0.99999999]) == "1.000"
+
+
 def test_bound_text_states_round_off_as_a_floor():
     assert proofs._bound_text(3e-11) == "< 1e-08"
     assert proofs._bound_text(3.2e-6) == "< 1e-05"

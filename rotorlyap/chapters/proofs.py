@@ -40,6 +40,13 @@ ROUNDOFF_TERM = 1e-8
 SHOOTING_NOISE = 3e-5
 
 
+def _range_text(values) -> str:
+    """The smallest and largest of ratios as text, 3 decimals: ``"0.900 to 0.950"``, or the one
+    value where both round alike (``"1.000"``)."""
+    lo, hi = f"{min(values):.3f}", f"{max(values):.3f}"
+    return lo if lo == hi else f"{lo} to {hi}"
+
+
 def _bound_text(value: float, floor: float = 0.0) -> str:
     """A small non-negative term as a bound: ``"< 1e-08"`` at round-off, else the power of ten above
     it (above ``floor`` at least, for a term whose size is noise)."""
@@ -179,7 +186,7 @@ class ProofTable:
         """``ch10_<key>_{numA,numl0,A,l0,ratio,lin,dev,res,flap,numflap}`` per case (3 significant
         digits; ``flap``: the start region's flap disturbance alone, deg, 2 digits;
         the residual term as a bound, :func:`_bound_text`), plus ``ch10_flight_tight`` (the azimuth,
-        whole deg, where the flight case's nonlinear term comes closest to zero), ``ch10_ratio_lo``/``_hi`` and ``ch10_hover_res``
+        whole deg, where the flight case's nonlinear term comes closest to zero), ``ch10_hover_res``
         (the largest residual term) over the hovers and the
         flight case's ``ch10_flight_mu`` and ``ch10_flight_n``; the settings the text quotes: the
         numerical certificates' azimuths ``ch10_n_psi``, the Taylor models' order
@@ -188,7 +195,8 @@ class ProofTable:
         (``ch10_shell_ratio``, ``ch10_shell_core``: the settings of
         :func:`rotorlyap.analysis.proof.prove_blade` on the level set) and the flight case's proved
         bound as a fraction of the numerical one, ``ch10_flight_Afrac`` (2 decimals); where the band's
-        proofs ran, ``ch10_<key>_band_ratio`` and over the hovers ``ch10_band_ratio_lo``/``_hi``."""
+        proofs ran, ``ch10_<key>_band_ratio``; over the hovers the ranges of the ratios as text,
+        ``ch10_ratio_range``, ``ch10_band_range``, ``ch10_balls_range`` (:func:`_range_text`)."""
         import inspect
 
         from .scans import MU_FORENSIC
@@ -214,13 +222,10 @@ class ProofTable:
                 f[f"ch10_{key}_band_ratio"] = Rounded(r.band_ratio, 3)
         hover = [r for r in self.rows if r.certificate.mu == 0]
         if hover and all(r.band is not None for r in hover):
-            f["ch10_band_ratio_lo"] = Rounded(min(r.band_ratio for r in hover), 3)
-            f["ch10_band_ratio_hi"] = Rounded(max(r.band_ratio for r in hover), 3)
+            f["ch10_band_range"] = _range_text([r.band_ratio for r in hover])
         if all(r.balls is not None for r in hover):
-            f["ch10_balls_ratio_lo"] = Rounded(min(r.balls_ratio for r in hover), 3)
-            f["ch10_balls_ratio_hi"] = Rounded(max(r.balls_ratio for r in hover), 3)
-        f["ch10_ratio_lo"] = Rounded(min(r.ratio for r in hover), 3)
-        f["ch10_ratio_hi"] = Rounded(max(r.ratio for r in hover), 3)
+            f["ch10_balls_range"] = _range_text([r.balls_ratio for r in hover])
+        f["ch10_ratio_range"] = _range_text([r.ratio for r in hover])
         f["ch10_hover_res"] = _bound_text(max(r.term("residual") for r in hover))
         flight = [r for r in self.rows if r.certificate.mu > 0]
         if flight:
@@ -255,18 +260,18 @@ def proof_table(hover_cases=HOVER_CASES, flight=FLIGHT_CASE) -> ProofTable:
     """:func:`rotorlyap.certify` of the quadratic function with ``verify=True`` for each hover case
     (Table I, hover trim) and the forward-flight case (``None`` to skip it): the trimmed helicopter
     of chapter 8."""
-    def row(key, label, cert, band: bool = False):
-        balls = prove_blade(cert.lyapunov, cert.bound, method="balls") if cert.certified else None
-        on_band = prove_blade(cert.lyapunov, cert.bound, level_set=False) if cert.certified and band else None
+    def row(key, label, cert, compare: bool = False):
+        balls = prove_blade(cert.lyapunov, cert.bound, method="balls") if cert.certified and compare else None
+        on_band = prove_blade(cert.lyapunov, cert.bound, level_set=False) if cert.certified and compare else None
         return ProofRow(key, label, cert, balls, on_band)
 
     # the quadratic function by name: this chapter proves it (verify=True proves the function
     # certify returns, by default the augmented energy where it certifies more: chapter 10)
-    # in hover also the band's proof (condition (h) on the whole band), about a second each; in
-    # forward flight it takes as long as the level set's (the docstring of
-    # rotorlyap.analysis.proof.FLIGHT_FIRST_CUBE measures it), so the chapter does not run it
+    # in hover also the band's proof (condition (h) on the whole band) and ball arithmetic's, about a
+    # second together; in forward flight they take as long as the level set's proof (the README's
+    # measurements, python benchmarks/bench_proof.py --flight), so the chapter does not run them
     rows = [row(cg, f"{cg} C.G., hover", certify(BladeParameters.table_i(cg), 0.0, function="quadratic",
-                                                 verify=True), band=True)
+                                                 verify=True), compare=True)
             for cg in hover_cases]
     residual = float("nan")
     if flight is not None:
