@@ -526,7 +526,7 @@ def prove_quadratic_models(system, quadratic: Callable[[int], tuple], A: float, 
         raise ValueError(f"n_models ({n_models!r}) must divide n_intervals ({N})")
     group = N // Nc
     N0_c = None
-    if Nc != N:
+    if Nc != N and level_set:
         # the linear part's matrix over each coarse interval: the hull of the fine intervals' balls
         N0 = fb.as_balls(base.N0)
         lo = N0.lower().reshape((Nc, group) + N0.shape[1:]).min(axis=1)
