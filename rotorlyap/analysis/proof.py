@@ -61,8 +61,9 @@ FLIGHT_FIRST_CUBE = 0.7
 """The first bound :func:`prove_blade` tries in forward flight on the band (``level_set=False``), as a
 fraction of the bound asked (``method="taylor"``; the outer cube of its shells, ``first_cube``); on
 the level set (the default) the first bound is the one asked: the whole numerical bound at mu = 0.1
-is proved in 14 s (917 974 boxes; measured 2026-12-06 on an AMD EPYC), and in hover 1.00 of it
-for every Table I case in about 1 s, where the band proof reaches 0.90 to 0.95. Measured on the trimmed
+is proved in 11 to 14 s (917 974 boxes; measured 2026-12-06 on an AMD EPYC,
+``benchmarks/bench_proof.py --flight``), and in hover 1.00 of it for every Table I case in about
+0.6 s, where the band proof reaches 0.90 to 0.95. Measured on the trimmed
 helicopter at mu = 0.1 (2026-12-06, shells in the ratio :data:`FLIGHT_SHELLS`, 32 model intervals):
 0.7 of the numerical bound proved in 34 to 38 s. With shells in the ratio 0.85, 0.75 is not proved:
 the second cube's search does not close (0.705 of the bound reached in 1.5 million boxes, 74 s;

@@ -27,7 +27,7 @@ from ..methods.proof import SHELL_CORE, Proof, nonlinear_bounds
 from ..model.blade import Blade
 from ..model.forward_trim import forward_flight_trim
 from ..model.parameters import BladeParameters
-from ..reporting import Rounded, decade_above, degrees
+from ..reporting import Rounded, decade_above
 
 #: Below this, a residual term is round-off (the hover equilibrium's): printed as "< 1e-08".
 ROUNDOFF_TERM = 1e-8
